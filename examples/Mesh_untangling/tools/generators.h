@@ -1,0 +1,97 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Test problems the project makes itself: structured meshes of the unit
+// square and cube whose interior vertices are moved at random until many
+// elements invert, boundary fixed.
+#ifndef MESH_UNTANGLING_TOOLS_GENERATORS_H
+#define MESH_UNTANGLING_TOOLS_GENERATORS_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+
+#include <cstdint>
+#include <random>
+
+namespace Mesh_untangling_tools {
+
+using CGAL::Mesh_untangling::IO::Mesh_file;
+
+/// (n+1)^2 vertices on [0,1]^2, 2 n^2 triangles (counter-clockwise); rest = map.
+inline Mesh_file make_square_grid(std::size_t n)
+{
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.rest_dimension = m.map_dimension = 2;
+  auto id = [n](std::size_t i, std::size_t j) { return j * (n + 1) + i; };
+  for(std::size_t j = 0; j <= n; ++j)
+    for(std::size_t i = 0; i <= n; ++i)
+      m.rest.push_back({double(i) / n, double(j) / n, 0.});
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i) {
+      // alternate the diagonal so that no direction is favoured
+      if((i + j) % 2 == 0) {
+        m.simplices.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), 0});
+        m.simplices.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1), 0});
+      } else {
+        m.simplices.push_back({id(i, j), id(i + 1, j), id(i, j + 1), 0});
+        m.simplices.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), 0});
+      }
+    }
+  m.map = m.rest;
+  return m;
+}
+
+/// (n+1)^3 vertices on [0,1]^3, 6 n^3 positive tetrahedra (Kuhn subdivision); rest = map.
+inline Mesh_file make_cube_grid(std::size_t n)
+{
+  Mesh_file m;
+  m.simplex_size = 4;
+  m.rest_dimension = m.map_dimension = 3;
+  auto id = [n](std::size_t i, std::size_t j, std::size_t k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for(std::size_t k = 0; k <= n; ++k)
+    for(std::size_t j = 0; j <= n; ++j)
+      for(std::size_t i = 0; i <= n; ++i)
+        m.rest.push_back({double(i) / n, double(j) / n, double(k) / n});
+  // The six tets of the Kuhn subdivision: paths from corner 000 to 111.
+  static const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(std::size_t k = 0; k < n; ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i)
+        for(const auto& path : paths) {
+          std::size_t c[3] = {i, j, k};
+          std::array<std::size_t, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s) {
+            ++c[path[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          // odd permutations of the axes give negative tets: swap to keep all positive
+          const bool odd = (path[0] == 0 && path[1] == 2) || (path[0] == 1 && path[1] == 0) || (path[0] == 2 && path[1] == 1);
+          if(odd) std::swap(t[2], t[3]);
+          m.simplices.push_back(t);
+        }
+  m.map = m.rest;
+  return m;
+}
+
+/// Fixes the boundary (coordinates at 0 or 1) and moves every interior vertex
+/// by a uniform random offset of up to `amplitude` grid cells per axis.
+inline void perturb_interior(Mesh_file& m, std::size_t n, double amplitude, std::uint32_t seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-amplitude / n, amplitude / n);
+  const int dimension = m.simplex_size - 1;
+  m.has_fixed = true;
+  m.fixed.clear();
+  for(std::size_t v = 0; v < m.map.size(); ++v) {
+    bool boundary = false;
+    for(int c = 0; c < dimension; ++c)
+      boundary = boundary || m.rest[v][c] == 0. || m.rest[v][c] == 1.;
+    if(boundary) { m.fixed.push_back(v); continue; }
+    for(int c = 0; c < dimension; ++c) m.map[v][c] += offset(random);
+  }
+}
+
+} // namespace Mesh_untangling_tools
+
+#endif

@@ -1,0 +1,81 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_UNTANGLING_RESULT_H
+#define CGAL_MESH_UNTANGLING_UNTANGLING_RESULT_H
+
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Mesh_untangling {
+
+/// \ingroup PkgMeshUntanglingRef
+/// How an untangling run ended.
+enum class Untangling_status
+{
+  SUCCESS,                 ///< every element positive, no k-covering (input defects aside)
+  INVERTED_ELEMENTS_LEFT,  ///< the iteration budget ran out with inverted elements left
+  COVERINGS_LEFT,          ///< no element inverted, but some vertex star or edge fan is wound twice
+  TIME_LIMIT_REACHED,      ///< `maximum_running_time` ran out before success
+  NUMERICAL_FAILURE,       ///< the energy or its gradient stopped being finite and could not be recovered
+  INVALID_INPUT            ///< the input violates a precondition (see `message`)
+};
+
+/// \ingroup PkgMeshUntanglingRef
+/// A sentence that says what `status` means.
+inline std::string to_string(Untangling_status status)
+{
+  switch(status) {
+    case Untangling_status::SUCCESS: return "success: the map is locally invertible";
+    case Untangling_status::INVERTED_ELEMENTS_LEFT: return "inverted elements are left after the iteration budget";
+    case Untangling_status::COVERINGS_LEFT: return "no inverted element, but some vertex star or edge fan is covered more than once";
+    case Untangling_status::TIME_LIMIT_REACHED: return "the time limit was reached before the map became locally invertible";
+    case Untangling_status::NUMERICAL_FAILURE: return "the energy stopped being finite and could not be recovered";
+    case Untangling_status::INVALID_INPUT: return "invalid input";
+  }
+  return "unknown status";
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// What an untangling run did and what it left, as measured on the positions
+/// written back to the user.  Inversion is decided with exact orientation
+/// predicates, relative to the orientation of each target element.
+struct Untangling_result
+{
+  Untangling_status status = Untangling_status::INVALID_INPUT;
+  std::string message;                 ///< details for INVALID_INPUT and NUMERICAL_FAILURE
+
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_elements = 0;
+  std::size_t number_of_fixed_vertices = 0;
+  std::size_t degenerate_targets_replaced = 0; ///< rest elements too flat to serve, replaced by regular ones
+
+  std::size_t inverted_before = 0;     ///< inverted elements in the input map
+  std::size_t inverted_after = 0;      ///< inverted elements in the result (input defects excluded)
+  std::size_t overwound_vertices_after = 0; ///< vertex stars wound more than once (2D angle, 3D solid angle)
+  std::size_t overwound_edges_after = 0;    ///< 3D edge fans wound more than once
+  std::size_t input_defects = 0;       ///< defects that fixed vertices alone determine: not repairable, not a failure
+
+  double min_scaled_det_before = 0;    ///< min over elements of det J (J relative to the target, targets scaled to the map's size)
+  double min_scaled_det_after = 0;
+  double max_shape_distortion = 0;     ///< max of tr(JᵀJ)/d / det(J)^(2/d) over positive elements (1 = similarity)
+  double mean_shape_distortion = 0;
+  double max_volume_distortion = 0;    ///< max of (det J + 1/det J)/2 over positive elements (1 = same size)
+  double mean_volume_distortion = 0;
+  double final_energy = 0;             ///< F(X, ε) at the last ε, normalized by the total target volume
+  double final_epsilon = 0;
+
+  std::size_t outer_iterations = 0;    ///< ε steps
+  std::size_t inner_iterations = 0;    ///< solver iterations, all ε steps together
+  std::size_t energy_evaluations = 0;  ///< evaluations of F (with or without gradient)
+  double seconds = 0;
+  std::string solver;                  ///< name of the inner solver that ran
+
+  bool is_locally_invertible() const
+  { return status == Untangling_status::SUCCESS; }
+};
+
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_UNTANGLING_RESULT_H

@@ -1,0 +1,272 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// The soup every front end fills: vertex positions of the map, simplices,
+/// one target simplex per element, fixed flags.  Mesh adaptors only fill it
+/// and read the positions back.
+template <int d>
+struct Untangling_input
+{
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Simplex = std::array<std::size_t, d + 1>;
+  using Target = std::array<Vector, d + 1>;
+
+  std::vector<Vector> positions;
+  std::vector<Simplex> elements;
+  std::vector<Target> targets;          // empty: regular simplices
+  std::vector<bool> is_fixed;           // empty: all free
+};
+
+/// How target sizes relate to the map.
+enum class Target_scaling
+{
+  AUTOMATIC,            // match the map's volume when the boundary is fixed or no target is given
+  AS_GIVEN,             // targets are in the units of the map
+  MATCH_MAP_VOLUME      // total target volume = (signed) volume of the map
+};
+
+/// Flat arrays the solvers work on.  Coordinates are normalized (centred,
+/// unit bounding box) so that tolerances are scale free; elements whose
+/// target is negatively oriented have two vertices swapped so that every
+/// target is positive; elements with only fixed vertices are left out
+/// (they are constant and cannot be repaired).
+template <int d>
+struct Untangling_problem
+{
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Gradient_operator = Eigen::Matrix<double, d + 1, d>;   // J = X * G, X = [x_0 ... x_d]
+  using Simplex = std::array<std::size_t, d + 1>;
+
+  std::size_t number_of_vertices = 0;
+  std::vector<double> x;                            // d coordinates per vertex, normalized
+  std::vector<char> is_fixed;
+  std::vector<Simplex> elements;
+  std::vector<Gradient_operator> gradient_operators;
+  std::vector<double> weights;                      // target volumes, summing to 1
+
+  // bookkeeping to report on the user's elements
+  std::vector<int> reference_orientation;           // per input element: orientation of its target
+  std::size_t degenerate_targets_replaced = 0;
+  std::size_t number_of_fixed_vertices = 0;
+  std::size_t constant_elements = 0;                // all vertices fixed: left out of the energy
+
+  Vector center = Vector::Zero();
+  double scale = 1;
+
+  Vector point(std::size_t v) const { return Eigen::Map<const Vector>(&x[d * v]); }
+  Vector to_user(const Vector& p) const { return p * scale + center; }
+};
+
+template <int d>
+double simplex_volume(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
+{
+  Eigen::Matrix<double, d, d> E;
+  for(int i = 0; i < d; ++i)
+    E.col(i) = s[i + 1] - s[0];
+  return E.determinant() / (d == 2 ? 2. : 6.);
+}
+
+/// Regular simplex of unit volume, positively oriented.
+template <int d>
+std::array<Eigen::Matrix<double, d, 1>, d + 1> regular_simplex()
+{
+  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+  if constexpr(d == 2) {
+    s[0] << 0, 0;  s[1] << 1, 0;  s[2] << 0.5, std::sqrt(3.) / 2;
+  } else {
+    s[0] << 1, 1, 1;  s[1] << 1, -1, -1;  s[2] << -1, 1, -1;  s[3] << -1, -1, 1;
+  }
+  const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
+  for(auto& p : s) p *= factor;
+  if(simplex_volume<d>(s) < 0) std::swap(s[0], s[1]);
+  return s;
+}
+
+/// Mean ratio quality of a simplex: 1 for a regular one, 0 for a flat one.
+template <int d>
+double mean_ratio(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
+{
+  double sum_sq = 0;
+  for(int i = 0; i <= d; ++i)
+    for(int j = i + 1; j <= d; ++j)
+      sum_sq += (s[i] - s[j]).squaredNorm();
+  if(sum_sq == 0) return 0;
+  const double v = std::abs(simplex_volume<d>(s));
+  // regular simplex: sum of squared edges = c_d * vol^(2/d)
+  const auto r = regular_simplex<d>();
+  double r_sq = 0;
+  for(int i = 0; i <= d; ++i)
+    for(int j = i + 1; j <= d; ++j)
+      r_sq += (r[i] - r[j]).squaredNorm();
+  return r_sq * std::pow(v, 2. / d) / sum_sq;
+}
+
+/// Vertices of the facets that belong to exactly one element.
+template <int d>
+std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements)
+{
+  std::vector<std::array<std::size_t, d>> facets;
+  facets.reserve(elements.size() * (d + 1));
+  for(const auto& e : elements)
+    for(int skip = 0; skip <= d; ++skip) {
+      std::array<std::size_t, d> f;
+      for(int i = 0, k = 0; i <= d; ++i)
+        if(i != skip) f[k++] = e[i];
+      std::sort(f.begin(), f.end());
+      facets.push_back(f);
+    }
+  std::sort(facets.begin(), facets.end());
+  std::vector<char> on_boundary(n, 0);
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i;
+    while(j < facets.size() && facets[j] == facets[i]) ++j;
+    if(j - i == 1)
+      for(std::size_t v : facets[i]) on_boundary[v] = 1;
+    i = j;
+  }
+  return on_boundary;
+}
+
+/// Checks the input and builds the normalized problem; throws
+/// std::invalid_argument with a message naming the element or vertex.
+template <int d>
+Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
+                                              Target_scaling scaling = Target_scaling::AUTOMATIC,
+                                              double degenerate_quality = 1e-4)
+{
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Target = std::array<Vector, d + 1>;
+  const std::size_t n = in.positions.size(), m = in.elements.size();
+  if(n == 0 || m == 0)
+    throw std::invalid_argument("the mesh has no vertex or no element");
+  if(!in.targets.empty() && in.targets.size() != m)
+    throw std::invalid_argument(std::to_string(in.targets.size()) + " target simplices for " + std::to_string(m) + " elements");
+  if(!in.is_fixed.empty() && in.is_fixed.size() != n)
+    throw std::invalid_argument("fixed-vertex flags for " + std::to_string(in.is_fixed.size()) + " vertices, the mesh has " + std::to_string(n));
+  for(std::size_t v = 0; v < n; ++v)
+    if(!in.positions[v].allFinite())
+      throw std::invalid_argument("vertex " + std::to_string(v) + " has a non-finite coordinate");
+  for(std::size_t k = 0; k < m; ++k)
+    for(int i = 0; i <= d; ++i) {
+      if(in.elements[k][i] >= n)
+        throw std::invalid_argument("element " + std::to_string(k) + " refers to vertex " + std::to_string(in.elements[k][i]) + ", the mesh has " + std::to_string(n));
+      for(int j = 0; j < i; ++j)
+        if(in.elements[k][i] == in.elements[k][j])
+          throw std::invalid_argument("element " + std::to_string(k) + " repeats vertex " + std::to_string(in.elements[k][i]));
+      if(!in.targets.empty() && !in.targets[k][i].allFinite())
+        throw std::invalid_argument("target of element " + std::to_string(k) + " has a non-finite coordinate");
+    }
+
+  Untangling_problem<d> P;
+  P.number_of_vertices = n;
+  P.is_fixed.assign(n, 0);
+  for(std::size_t v = 0; v < in.is_fixed.size(); ++v)
+    P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
+  P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
+
+  // Normalize the map: centred on its bounding box, unit largest extent.
+  Vector lo = in.positions[0], hi = lo;
+  for(const auto& p : in.positions) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
+  P.center = (lo + hi) / 2;
+  P.scale = (hi - lo).maxCoeff() > 0 ? (hi - lo).maxCoeff() : 1.;
+  P.x.resize(d * n);
+  for(std::size_t v = 0; v < n; ++v)
+    Eigen::Map<Vector>(&P.x[d * v]) = (in.positions[v] - P.center) / P.scale;
+
+  // Targets: orientation, degenerate ones replaced by regular ones of the mean size.
+  std::vector<Target> targets(m);
+  P.reference_orientation.assign(m, 1);
+  std::vector<char> degenerate(m, 0);
+  double total = 0;
+  int majority = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
+    const double vol = simplex_volume<d>(targets[k]);
+    degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
+    if(!degenerate[k]) { total += std::abs(vol); majority += vol > 0 ? 1 : -1; }
+  }
+  const std::size_t good = m - std::count(degenerate.begin(), degenerate.end(), 1);
+  const double mean_volume = good > 0 ? total / good : 1.;
+  for(std::size_t k = 0; k < m; ++k) {
+    if(degenerate[k]) {
+      // keep the orientation the rest element has, if it has one
+      const double vol = in.targets.empty() ? 1. : simplex_volume<d>(in.targets[k]);
+      targets[k] = regular_simplex<d>();
+      for(auto& p : targets[k]) p *= std::pow(mean_volume, 1. / d);
+      if(vol < 0 || (vol == 0 && majority < 0)) std::swap(targets[k][0], targets[k][1]);
+      ++P.degenerate_targets_replaced;
+    }
+    P.reference_orientation[k] = simplex_volume<d>(targets[k]) > 0 ? 1 : -1;
+  }
+
+  // Target scale.
+  const bool given = !in.targets.empty();
+  if(scaling == Target_scaling::AUTOMATIC) {
+    const std::vector<char> on_boundary = boundary_vertices<d>(n, in.elements);
+    bool boundary_fixed = true;
+    for(std::size_t v = 0; v < n; ++v)
+      if(on_boundary[v] && !P.is_fixed[v]) { boundary_fixed = false; break; }
+    scaling = (boundary_fixed || !given) ? Target_scaling::MATCH_MAP_VOLUME : Target_scaling::AS_GIVEN;
+  }
+  double target_factor = 1. / P.scale;     // AS_GIVEN: same units as the map
+  if(scaling == Target_scaling::MATCH_MAP_VOLUME) {
+    double signed_volume = 0, absolute_volume = 0, target_volume = 0;
+    for(std::size_t k = 0; k < m; ++k) {
+      Target image;
+      for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
+      const double v = simplex_volume<d>(image) * P.reference_orientation[k];
+      signed_volume += v;
+      absolute_volume += std::abs(v);
+      target_volume += std::abs(simplex_volume<d>(targets[k]));
+    }
+    const double wanted = signed_volume > 1e-3 * absolute_volume ? signed_volume : absolute_volume;
+    target_factor = wanted > 0 ? std::pow(wanted / target_volume, 1. / d) : 1.;
+  }
+
+  // Elements with positive targets, gradient operators, weights.
+  double weight_sum = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    auto e = in.elements[k];
+    Target t = targets[k];
+    for(auto& p : t) p *= target_factor;
+    if(P.reference_orientation[k] < 0) { std::swap(e[0], e[1]); std::swap(t[0], t[1]); }
+    bool all_fixed = true;
+    for(std::size_t v : e) all_fixed = all_fixed && P.is_fixed[v];
+    if(all_fixed) { ++P.constant_elements; continue; }
+    Eigen::Matrix<double, d, d> E;
+    for(int i = 0; i < d; ++i) E.col(i) = t[i + 1] - t[0];
+    const Eigen::Matrix<double, d, d> Einv = E.inverse();
+    typename Untangling_problem<d>::Gradient_operator G;
+    G.template bottomRows<d>() = Einv;
+    G.row(0) = -Einv.colwise().sum();
+    P.elements.push_back(e);
+    P.gradient_operators.push_back(G);
+    P.weights.push_back(E.determinant() / (d == 2 ? 2. : 6.));
+    weight_sum += P.weights.back();
+  }
+  for(double& w : P.weights) w /= weight_sum;
+  return P;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H

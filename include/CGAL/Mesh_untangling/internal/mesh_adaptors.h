@@ -1,0 +1,201 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Front ends: fill an Untangling_input from a mesh and write the result back.
+// They hold no numerics.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
+
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dimension.h>
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <typename T>
+constexpr bool is_given() { return !std::is_same<T, internal_np::Param_not_found>::value; }
+
+template <int d, typename Point>
+Eigen::Matrix<double, d, 1> to_vector(const Point& p)
+{
+  Eigen::Matrix<double, d, 1> v;
+  for(int c = 0; c < d; ++c) v[c] = CGAL::to_double(p[c]);
+  return v;
+}
+
+/// A 3D triangle laid flat, isometrically and positively oriented.
+template <typename Point_3>
+std::array<Eigen::Vector2d, 3> flatten_triangle(const Point_3& a, const Point_3& b, const Point_3& c)
+{
+  const Eigen::Vector3d p = to_vector<3>(a), q = to_vector<3>(b), r = to_vector<3>(c);
+  const Eigen::Vector3d e = q - p, f = r - p;
+  const double length = e.norm();
+  const Eigen::Vector3d u = length > 0 ? Eigen::Vector3d(e / length) : Eigen::Vector3d::UnitX();
+  std::array<Eigen::Vector2d, 3> t;
+  t[0] << 0, 0;
+  t[1] << length, 0;
+  t[2] << f.dot(u), u.cross(f).norm();
+  return t;
+}
+
+template <typename TriangleMesh>
+class Face_graph_adaptor
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+
+public:
+  explicit Face_graph_adaptor(TriangleMesh& tm) : tm_(tm)
+  {
+    for(vertex_descriptor v : vertices(tm_)) vertices_.push_back(v);
+  }
+
+  const std::string& error() const { return error_; }
+
+  template <typename UVMap, typename DomainMap, typename FixedMap, typename TargetMap>
+  Untangling_input<2> make_input(const UVMap& uv, const DomainMap& domain, const FixedMap& fixed, const TargetMap& targets)
+  {
+    using Domain_point = typename boost::property_traits<DomainMap>::value_type;
+    constexpr int domain_dimension = Ambient_dimension<Domain_point>::value;
+    auto index = get_initialized_vertex_index_map(tm_);
+    Untangling_input<2> in;
+    for(vertex_descriptor v : vertices_) {
+      in.positions.push_back(to_vector<2>(get(uv, v)));
+      in.is_fixed.push_back(get(fixed, v));
+    }
+    std::size_t face_number = 0;
+    for(auto f : faces(tm_)) {
+      std::array<std::size_t, 3> simplex;
+      std::array<Domain_point, 3> corners;
+      int k = 0;
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) {
+        if(k == 3) break;
+        corners[k] = get(domain, v);
+        simplex[k++] = get(index, v);
+      }
+      if(k != 3 || degree(f, tm_) != 3) {
+        error_ = "face " + std::to_string(face_number) + " is not a triangle";
+        return in;
+      }
+      in.elements.push_back(simplex);
+      if constexpr(is_given<TargetMap>()) {
+        const auto t = get(targets, f);
+        in.targets.push_back({to_vector<2>(t[0]), to_vector<2>(t[1]), to_vector<2>(t[2])});
+      } else if constexpr(domain_dimension == 3) {
+        in.targets.push_back(flatten_triangle(corners[0], corners[1], corners[2]));
+      } else {
+        in.targets.push_back({to_vector<2>(corners[0]), to_vector<2>(corners[1]), to_vector<2>(corners[2])});
+      }
+      ++face_number;
+    }
+    return in;
+  }
+
+  template <typename UVMap>
+  void write_back(const Untangling_input<2>& in, UVMap& uv) const
+  {
+    using Point_2 = typename boost::property_traits<UVMap>::value_type;
+    for(std::size_t i = 0; i < vertices_.size(); ++i)
+      if(!in.is_fixed[i])
+        put(uv, vertices_[i], Point_2(in.positions[i][0], in.positions[i][1]));
+  }
+
+private:
+  TriangleMesh& tm_;
+  std::vector<vertex_descriptor> vertices_;
+  std::string error_;
+};
+
+template <typename TetrahedralComplex, typename FixedMap, typename RestMap, typename TargetMap>
+Untangling_input<3> make_tetrahedral_input(TetrahedralComplex& tc, const FixedMap& fixed,
+                                           const RestMap& rest, const TargetMap& targets)
+{
+  Untangling_input<3> in;
+  auto points = get(CGAL::vertex_point, tc);
+  const std::size_t n = num_vertices(tc), m = num_cells(tc);
+  for(std::size_t v = 0; v < n; ++v) {
+    in.positions.push_back(to_vector<3>(get(points, v)));
+    in.is_fixed.push_back(get(fixed, v));
+  }
+  for(std::size_t c = 0; c < m; ++c) {
+    std::array<std::size_t, 4> cell;
+    for(int i = 0; i < 4; ++i) cell[i] = cell_vertex(tc, c, i);
+    in.elements.push_back(cell);
+    if constexpr(is_given<TargetMap>()) {
+      const auto t = get(targets, c);
+      in.targets.push_back({to_vector<3>(t[0]), to_vector<3>(t[1]), to_vector<3>(t[2]), to_vector<3>(t[3])});
+    } else if constexpr(is_given<RestMap>()) {
+      std::array<Eigen::Vector3d, 4> t;
+      for(int i = 0; i < 4; ++i)
+        t[i] = cell[i] < n ? to_vector<3>(get(rest, cell[i])) : Eigen::Vector3d::Zero();
+      in.targets.push_back(t);
+    }
+  }
+  return in;
+}
+
+template <typename TetrahedralComplex>
+void write_back_tetrahedral(const Untangling_input<3>& in, TetrahedralComplex& tc)
+{
+  auto points = get(CGAL::vertex_point, tc);
+  using Point = typename boost::property_traits<decltype(points)>::value_type;
+  for(std::size_t v = 0; v < in.positions.size(); ++v)
+    if(!in.is_fixed[v])
+      put(points, v, Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]));
+}
+
+template <int d, typename PointRange, typename SimplexRange, typename FixedMap, typename RestRange>
+Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange& simplices,
+                                    const FixedMap& fixed, const RestRange& rest)
+{
+  Untangling_input<d> in;
+  std::size_t v = 0;
+  for(const auto& p : points) {
+    in.positions.push_back(to_vector<d>(p));
+    in.is_fixed.push_back(get(fixed, v++));
+  }
+  const std::size_t n = in.positions.size();
+  for(const auto& s : simplices) {
+    std::array<std::size_t, d + 1> e;
+    for(int i = 0; i <= d; ++i) e[i] = static_cast<std::size_t>(s[i]);
+    in.elements.push_back(e);
+    if constexpr(is_given<RestRange>()) {
+      std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
+      for(int i = 0; i <= d; ++i)
+        t[i] = e[i] < n && e[i] < rest.size() ? to_vector<d>(rest[e[i]]) : Eigen::Matrix<double, d, 1>::Zero();
+      in.targets.push_back(t);
+    }
+  }
+  return in;
+}
+
+template <int d, typename PointRange>
+void write_back_soup(const Untangling_input<d>& in, PointRange& points)
+{
+  using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
+  std::size_t v = 0;
+  for(auto& p : points) {
+    if(!in.is_fixed[v]) {
+      if constexpr(d == 2) p = Point(in.positions[v][0], in.positions[v][1]);
+      else p = Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]);
+    }
+    ++v;
+  }
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,64 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The package's own named parameters.  CGAL 5.5 lets a package outside the
+// library add tags and free functions, not member functions on the chain, so
+// each of these takes the rest of the chain as an optional last argument:
+//   Mesh_untangling::parameters::theta(0.5, CGAL::parameters::vertex_is_constrained_map(fixed))
+#ifndef CGAL_MESH_UNTANGLING_PARAMETERS_H
+#define CGAL_MESH_UNTANGLING_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace internal_np {
+enum mesh_untangling_theta_t { mesh_untangling_theta };
+enum mesh_untangling_solver_t { mesh_untangling_solver };
+enum mesh_untangling_target_scaling_t { mesh_untangling_target_scaling };
+enum mesh_untangling_face_target_map_t { mesh_untangling_face_target_map };
+enum mesh_untangling_cell_target_map_t { mesh_untangling_cell_target_map };
+enum mesh_untangling_rest_point_map_t { mesh_untangling_rest_point_map };
+enum mesh_untangling_rest_points_t { mesh_untangling_rest_points };
+} // namespace internal_np
+
+namespace Mesh_untangling {
+namespace parameters {
+
+using Default_named_parameters = CGAL::parameters::Default_named_parameters;
+
+#define CGAL_MESH_UNTANGLING_PARAMETER(NAME, TAG)                                              \
+  template <typename K, typename NP = Default_named_parameters>                               \
+  Named_function_parameters<K, internal_np::TAG, NP> NAME(const K& k, const NP& np = NP())    \
+  {                                                                                           \
+    return Named_function_parameters<K, internal_np::TAG, NP>(k, np);                         \
+  }
+
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// Weight of the size term against the shape term, in [0, 1] (default 1/128 in 2D, 1/2 in 3D).
+CGAL_MESH_UNTANGLING_PARAMETER(theta, mesh_untangling_theta_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// The inner solver, a `CGAL::Mesh_untangling::Solver` (default `Solver::NEWTON`).
+CGAL_MESH_UNTANGLING_PARAMETER(solver, mesh_untangling_solver_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// How target sizes relate to the map, a `CGAL::Mesh_untangling::Target_scaling`.
+CGAL_MESH_UNTANGLING_PARAMETER(target_scaling, mesh_untangling_target_scaling_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// Property map face -> `std::array<Point_2, 3>`: the target triangle of each face.
+CGAL_MESH_UNTANGLING_PARAMETER(face_target_map, mesh_untangling_face_target_map_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// Property map cell index -> `std::array<Point_3, 4>`: the target tetrahedron of each cell.
+CGAL_MESH_UNTANGLING_PARAMETER(cell_target_map, mesh_untangling_cell_target_map_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// Property map vertex index -> `Point_3`: rest positions giving the target tetrahedra.
+CGAL_MESH_UNTANGLING_PARAMETER(rest_point_map, mesh_untangling_rest_point_map_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// Random access range of rest points, one per soup point (soup entries only).
+CGAL_MESH_UNTANGLING_PARAMETER(rest_points, mesh_untangling_rest_points_t)
+
+#undef CGAL_MESH_UNTANGLING_PARAMETER
+
+} // namespace parameters
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,114 @@
+// The energy of one simplex: gradient and Hessian against finite
+// differences, the regularized determinant, and the eps rule step by step.
+#include <CGAL/Mesh_untangling/internal/Energy.h>
+#include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
+
+#include "test_common.h"
+
+#include <random>
+
+using namespace CGAL::Mesh_untangling::internal;
+
+template <int d>
+void check_derivatives(std::mt19937& random, bool inverted)
+{
+  std::normal_distribution<double> normal;
+  for(int trial = 0; trial < 50; ++trial) {
+    Eigen::Matrix<double, d, d> J;
+    for(int i = 0; i < d * d; ++i) J.data()[i] = normal(random);
+    if((J.determinant() < 0) != inverted) J.row(0) *= -1;
+    const Simplex_energy<d> f{trial % 2 ? 0.5 : 1. / 128, trial % 3 ? 0.1 : 1e-3};
+    Eigen::Matrix<double, d, d> G;
+    typename Simplex_energy<d>::Hessian H, H_psd;
+    const double value = f.value_and_gradient(J, G, &H, false);
+    f.value_and_gradient(J, G, &H_psd, true);
+    CHECK(std::abs(value - f.value(J)) <= 1e-12 * std::abs(value));
+
+    const double h = 1e-6;
+    for(int i = 0; i < d * d; ++i) {
+      Eigen::Matrix<double, d, d> Jp = J, Jm = J, Gp, Gm;
+      Jp.data()[i] += h;
+      Jm.data()[i] -= h;
+      const double fd = (f.value(Jp) - f.value(Jm)) / (2 * h);
+      CHECK_MESSAGE(std::abs(fd - G.data()[i]) <= 1e-5 * (1 + std::abs(fd)),
+                    "d=" << d << " gradient entry " << i << ": " << G.data()[i] << " vs " << fd);
+      f.value_and_gradient(Jp, Gp);
+      f.value_and_gradient(Jm, Gm);
+      const Eigen::Matrix<double, d, d> dG = (Gp - Gm) / (2 * h);
+      const Eigen::Matrix<double, d * d, 1> column = Eigen::Map<const Eigen::Matrix<double, d * d, 1>>(dG.data());
+      CHECK_MESSAGE((column - H.col(i)).norm() <= 1e-4 * (1 + column.norm()),
+                    "d=" << d << " Hessian column " << i << " off by " << (column - H.col(i)).norm());
+    }
+    // The projected Hessian is PSD and equals H where H already was.
+    Eigen::SelfAdjointEigenSolver<typename Simplex_energy<d>::Hessian> eigen(H_psd);
+    CHECK(eigen.eigenvalues().minCoeff() >= -1e-9 * eigen.eigenvalues().cwiseAbs().maxCoeff());
+    Eigen::SelfAdjointEigenSolver<typename Simplex_energy<d>::Hessian> raw(H);
+    if(raw.eigenvalues().minCoeff() >= 0) CHECK((H - H_psd).norm() <= 1e-9 * H.norm());
+  }
+}
+
+/// The gradient of the whole energy over a small mesh, fixed vertices included.
+template <int d>
+void check_assembled_gradient(std::mt19937& random)
+{
+  std::normal_distribution<double> normal;
+  Untangling_input<d> in;
+  for(int v = 0; v < d + 3; ++v) in.positions.push_back(Eigen::Matrix<double, d, 1>::NullaryExpr([&] { return normal(random); }));
+  if constexpr(d == 2) in.elements = {{0, 1, 2}, {1, 3, 2}, {2, 3, 4}};
+  else in.elements = {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}};
+  in.is_fixed.assign(in.positions.size(), false);
+  in.is_fixed[0] = true;
+  const auto P = make_untangling_problem<d>(in);
+  std::vector<double> g(P.x.size()), x = P.x;
+  const double eps = 0.05, theta = 0.3;
+  energy<d>(P, x.data(), eps, theta, g.data());
+  for(std::size_t i = 0; i < x.size(); ++i) {
+    const double h = 1e-6, saved = x[i];
+    x[i] = saved + h; const double fp = energy<d>(P, x.data(), eps, theta);
+    x[i] = saved - h; const double fm = energy<d>(P, x.data(), eps, theta);
+    x[i] = saved;
+    const double fd = P.is_fixed[i / d] ? 0. : (fp - fm) / (2 * h);
+    CHECK_MESSAGE(std::abs(fd - g[i]) <= 1e-5 * (1 + std::abs(fd)), "d=" << d << " coordinate " << i << ": " << g[i] << " vs " << fd);
+  }
+}
+
+void check_regularized_determinant()
+{
+  // chi(D) -> D for D > 0 and -> 0+ for D < 0 as eps -> 0; no cancellation for D << 0.
+  CHECK(std::abs(Regularized_determinant(2., 1e-8).value - 2.) < 1e-12);
+  const double tiny = Regularized_determinant(-1e6, 1e-3).value;
+  CHECK(tiny > 0 && std::abs(tiny - 1e-6 / (4e6)) < 1e-18);
+  CHECK(Regularized_determinant(-1., 0.).value == 0.);
+}
+
+void check_epsilon_rule()
+{
+  // Hand-computed: sigma = max(1 - 8/10, 0.1) = 0.2; chi(-0.5, 1) = (-0.5 + sqrt(1.25)) / 2;
+  // mu = 0.8 chi; eps = 2 sqrt(mu (mu + 0.5)).
+  const double chi = (-0.5 + std::sqrt(1.25)) / 2, mu = 0.8 * chi;
+  CHECK(std::abs(next_epsilon(1., 8., 10., -0.5) - 2 * std::sqrt(mu * (mu + 0.5))) < 1e-15);
+  // Small decrease: sigma floors at 0.1.
+  const double chi2 = Regularized_determinant(-0.1, 0.5).value, mu2 = 0.9 * chi2;
+  CHECK(std::abs(next_epsilon(0.5, 9.99, 10., -0.1) - 2 * std::sqrt(mu2 * (mu2 + 0.1))) < 1e-15);
+  // All positive and min det above mu: the tiny eps.
+  CHECK(next_epsilon(1e-3, 5., 10., 0.9) == tiny_epsilon);
+  CHECK(std::abs(initial_epsilon(-2.) - std::sqrt(1e-12 + 0.16)) < 1e-15);
+  CHECK(energy_settled(1.0, 1.0 + 1e-6, 0.1));
+  CHECK(!energy_settled(1.0, 1.0 + 1e-6, -0.1));
+  CHECK(!energy_settled(1.0, 1.1, 0.1));
+}
+
+int main()
+{
+  std::mt19937 random(7);
+  check_derivatives<2>(random, false);
+  check_derivatives<2>(random, true);
+  check_derivatives<3>(random, false);
+  check_derivatives<3>(random, true);
+  check_assembled_gradient<2>(random);
+  check_assembled_gradient<3>(random);
+  check_regularized_determinant();
+  check_epsilon_rule();
+  std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
+  return test::exit_code();
+}
