@@ -23,8 +23,8 @@ namespace internal {
 template <typename NamedParameters>
 Untangling_options read_options(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   Untangling_options o;
   o.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta), -1.);
   o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::NEWTON);
@@ -92,8 +92,8 @@ template <typename TriangleMesh, typename VertexUVMap,
 Mesh_untangling::Untangling_result
 untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   const auto domain = choose_parameter(get_parameter(np, internal_np::vertex_point),
                                        get_const_property_map(vertex_point, tm));
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
@@ -139,8 +139,8 @@ template <typename TetrahedralComplex, typename T, typename Tag, typename Base>
 Mesh_untangling::Untangling_result
 untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Base>& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_point_map);
@@ -171,8 +171,8 @@ Mesh_untangling::Untangling_result
 untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
                       const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
   constexpr int d = Ambient_dimension<Point>::value;
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),

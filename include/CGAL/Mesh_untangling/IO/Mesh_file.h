@@ -1,0 +1,40 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_MESH_FILE_H
+#define CGAL_MESH_UNTANGLING_IO_MESH_FILE_H
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+
+/// \ingroup PkgMeshUntanglingIO
+/// What a mesh file holds, independent of its format.
+///
+/// Formats with one geometry (OFF, VTK, MEDIT) store it in `map` and leave
+/// `rest` empty; OBJ stores `v` in `rest` and `vt` in `map`; the Du et al.
+/// `.input` format fills everything. A dimension is 2 when the format is 2D
+/// or every z is exactly 0 (never for tetrahedra), else 3.
+struct Mesh_file
+{
+  int simplex_size = 0;                               ///< 3 triangles, 4 tetrahedra, 0 no element
+  std::vector<std::array<std::size_t, 4>> simplices;  ///< 0-based; 4th entry unused (0) for triangles
+  int rest_dimension = 0;                             ///< 0: no rest geometry in the file; else 2 or 3
+  std::vector<std::array<double, 3>> rest;            ///< rest / parametric positions (z = 0 when 2D)
+  int map_dimension = 0;                              ///< 0: no map in the file; else 2 or 3
+  std::vector<std::array<double, 3>> map;             ///< positions (the possibly tangled map); z = 0 when 2D
+  bool has_fixed = false;                             ///< the file lists fixed (handle) vertices
+  std::vector<std::size_t> fixed;                     ///< their 0-based ids, sorted, without duplicates
+
+  std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }
+};
+
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_MESH_FILE_H

@@ -1,0 +1,311 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_VTK_H
+#define CGAL_MESH_UNTANGLING_IO_VTK_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
+#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
+#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
+#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+
+/// \ingroup PkgMeshUntanglingIO
+/// Named per-cell or per-point scalar values written along with a VTK mesh.
+typedef std::vector<std::pair<std::string, std::vector<double>>> VTK_fields;
+
+namespace internal {
+
+struct VTK_cell
+{
+  std::array<std::size_t, 4> ids;
+  std::size_t size;
+  std::size_t line;
+};
+
+inline bool is_VTK_section(std::string_view word)
+{
+  static const char* const sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA",
+                                         "FIELD", "METADATA"};
+  for(const char* s : sections)
+    if(same_keyword(word, s))
+      return true;
+  return false;
+}
+
+// A section keyword where a number should be means the previous block has
+// fewer entries than its count announced: say so instead of "not a number".
+inline Token next_VTK_value(Text_file& file, const std::string& block, std::size_t done, std::size_t count,
+                            const std::string& items)
+{
+  Token token;
+  const std::string status = "the " + block + " block ends after " + std::to_string(done) + " of "
+                             + std::to_string(count) + " " + items;
+  if(!file.next_token(token))
+    file.fail_truncated(status);
+  if(is_VTK_section(token.text))
+    file.fail(token.line, "truncated: " + status + " (found " + quote_token(token.text) + ")");
+  return token;
+}
+
+inline Token expect_VTK_keyword(Text_file& file, const char* keyword)
+{
+  Token token;
+  if(!file.next_token(token))
+    file.fail_truncated(std::string("expected ") + keyword);
+  if(!same_keyword(token.text, keyword))
+    file.fail(token.line, std::string("expected ") + keyword + ", got " + quote_token(token.text));
+  return token;
+}
+
+inline void read_VTK_header(Text_file& file)
+{
+  std::string_view text;
+  std::size_t line = 0;
+  if(!file.next_raw_line(text, line))
+    file.fail_truncated("expected the '# vtk DataFile' header");
+  if(text.substr(0, 14) != "# vtk DataFile")
+    file.fail(line, "not a legacy VTK file (the first line is not '# vtk DataFile ...')");
+  if(!file.next_raw_line(text, line))
+    file.fail_truncated("expected the title line");
+  Token format;
+  if(!file.next_token(format))
+    file.fail_truncated("expected ASCII or BINARY");
+  if(same_keyword(format.text, "BINARY"))
+    file.fail(format.line, "binary VTK is not supported (save it as ASCII)");
+  if(!same_keyword(format.text, "ASCII"))
+    file.fail(format.line, "expected ASCII or BINARY, got " + quote_token(format.text));
+  expect_VTK_keyword(file, "DATASET");
+  expect_VTK_keyword(file, "UNSTRUCTURED_GRID");
+}
+
+inline void check_VTK_data_type(const Text_file& file, const Token& token)
+{
+  static const char* const types[] = {"float", "double", "int", "unsigned_int", "long", "unsigned_long",
+                                      "short", "unsigned_short", "char", "unsigned_char",
+                                      "vtktypeint32", "vtktypeint64", "vtktypefloat32", "vtktypefloat64"};
+  for(const char* t : types)
+    if(same_keyword(token.text, t))
+      return;
+  file.fail(token.line, "unknown POINTS data type " + quote_token(token.text));
+}
+
+inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
+{
+  expect_VTK_keyword(file, "POINTS");
+  Token count_token, type;
+  if(!file.next_token(count_token) || !file.next_token(type))
+    file.fail_truncated("expected 'POINTS count type'");
+  const std::size_t count = to_size(file, count_token, "POINTS count");
+  check_VTK_data_type(file, type);
+  mesh.map.reserve(file.sane_capacity(count));
+  static const char* const axis[] = {"x", "y", "z"};
+  for(std::size_t i = 0; i < count; ++i) {
+    std::array<double, 3> p;
+    for(int c = 0; c < 3; ++c) {
+      Token t = next_VTK_value(file, "POINTS", i, count, "points");
+      p[c] = to_double(file, t, std::string(axis[c]) + " coordinate of point " + std::to_string(i));
+    }
+    mesh.map.push_back(p);
+  }
+}
+
+inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count, std::size_t n)
+{
+  Token size_token = next_VTK_value(file, "CELLS", i, count, "cells");
+  if(same_keyword(size_token.text, "OFFSETS"))
+    file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
+  const std::string what = "cell " + std::to_string(i);
+  VTK_cell cell{{0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line};
+  if(cell.size != 3 && cell.size != 4)
+    file.fail(cell.line, what + " has " + std::to_string(cell.size)
+                             + " vertices; only triangles (3) and tetrahedra (4) are supported");
+  for(std::size_t c = 0; c < cell.size; ++c)
+    cell.ids[c] = to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what);
+  std::string defect = simplex_defect(cell.ids, static_cast<int>(cell.size), n, 0);
+  if(!defect.empty())
+    file.fail(cell.line, what + ": " + defect);
+  return cell;
+}
+
+inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_of_vertices)
+{
+  Token keyword = expect_VTK_keyword(file, "CELLS");
+  Token count_token, size_token;
+  if(!file.next_token(count_token) || !file.next_token(size_token))
+    file.fail_truncated("expected 'CELLS count size'");
+  const std::size_t count = to_size(file, count_token, "CELLS count");
+  const std::size_t size = to_size(file, size_token, "CELLS size");
+  std::vector<VTK_cell> cells;
+  cells.reserve(file.sane_capacity(count));
+  std::size_t used = 0;
+  for(std::size_t i = 0; i < count; ++i) {
+    cells.push_back(read_VTK_cell(file, i, count, number_of_vertices));
+    used += 1 + cells.back().size;
+  }
+  if(used != size)
+    file.fail(keyword.line, "CELLS announces a size of " + std::to_string(size) + " but its "
+                                + std::to_string(count) + " cells use " + std::to_string(used) + " entries");
+  return cells;
+}
+
+inline int VTK_simplex_size(std::size_t type)
+{
+  return type == 10 ? 4 : type == 5 ? 3 : 0;
+}
+
+inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh)
+{
+  expect_VTK_keyword(file, "CELL_TYPES");
+  Token count_token;
+  if(!file.next_token(count_token))
+    file.fail_truncated("expected the CELL_TYPES count");
+  const std::size_t count = to_size(file, count_token, "CELL_TYPES count");
+  if(count != cells.size())
+    file.fail(count_token.line, "CELL_TYPES has " + std::to_string(count) + " entries but CELLS has "
+                                    + std::to_string(cells.size()));
+  mesh.simplices.reserve(cells.size());
+  for(std::size_t i = 0; i < count; ++i) {
+    Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
+    const std::string what = "cell " + std::to_string(i);
+    const std::size_t type = to_size(file, t, "type of " + what);
+    const int k = VTK_simplex_size(type);
+    if(k == 0)
+      file.fail(t.line, what + " has VTK type " + std::to_string(type)
+                            + "; only triangles (5) and tetrahedra (10) are supported");
+    if(i > 0 && k != mesh.simplex_size)
+      file.fail(t.line, "mixed cell types: " + what + " is a " + simplex_name(k) + " but cell 0 is a "
+                            + simplex_name(mesh.simplex_size) + "; only one element type is supported");
+    if(static_cast<std::size_t>(k) != cells[i].size)
+      file.fail(t.line, what + " has type " + std::to_string(type) + " (" + simplex_name(k) + ") but "
+                            + std::to_string(cells[i].size) + " vertices");
+    mesh.simplex_size = k;
+    mesh.simplices.push_back(cells[i].ids);
+  }
+}
+
+// Point and cell attributes may follow; this reader needs none of them.
+inline void check_VTK_tail(Text_file& file)
+{
+  Token token;
+  if(!file.next_token(token))
+    return;
+  static const char* const ignored[] = {"POINT_DATA", "CELL_DATA", "FIELD", "METADATA"};
+  for(const char* keyword : ignored)
+    if(same_keyword(token.text, keyword))
+      return;
+  file.fail(token.line, "unexpected " + quote_token(token.text) + " after CELL_TYPES");
+}
+
+inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, std::size_t size,
+                             const char* kind)
+{
+  for(const std::pair<std::string, std::vector<double>>& field : fields) {
+    const std::string& name = field.first;
+    if(name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
+      throw Write_error(path, std::string(kind) + " field name '" + name + "' is empty or has blanks");
+    if(field.second.size() != size)
+      throw Write_error(path, std::string(kind) + " field '" + name + "' has " + std::to_string(field.second.size())
+                                  + " values, expected " + std::to_string(size));
+    // VTK's own reader cannot parse "nan" or "inf".
+    for(std::size_t i = 0; i < size; ++i)
+      if(!std::isfinite(field.second[i]))
+        throw Write_error(path, std::string(kind) + " field '" + name + "' value " + std::to_string(i)
+                                    + " is not finite");
+  }
+}
+
+inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section)
+{
+  if(fields.empty())
+    return;
+  out << section << ' ' << size << '\n';
+  for(const std::pair<std::string, std::vector<double>>& field : fields) {
+    out << "SCALARS " << field.first << " double 1\nLOOKUP_TABLE default\n";
+    for(double v : field.second) {
+      write_number(out, v);
+      out << '\n';
+    }
+  }
+}
+
+inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
+{
+  const std::size_t k = static_cast<std::size_t>(mesh.simplex_size);
+  out << "CELLS " << mesh.simplices.size() << ' ' << mesh.simplices.size() * (k + 1) << '\n';
+  for(const std::array<std::size_t, 4>& s : mesh.simplices) {
+    out << k;
+    for(std::size_t c = 0; c < k; ++c)
+      out << ' ' << s[c];
+    out << '\n';
+  }
+  out << "CELL_TYPES " << mesh.simplices.size() << '\n';
+  for(std::size_t i = 0; i < mesh.simplices.size(); ++i)
+    out << (k == 4 ? "10\n" : "5\n");
+}
+
+} // namespace internal
+
+/// \ingroup PkgMeshUntanglingIO
+/// Reads a legacy ASCII VTK unstructured grid of triangles (type 5) or
+/// tetrahedra (type 10) into `map`; point and cell data are ignored.
+/// \throws Read_error if the file is missing, binary, or malformed.
+inline Mesh_file read_VTK(const std::string& path)
+{
+  internal::Text_file file(path);
+  internal::read_VTK_header(file);
+  Mesh_file mesh;
+  internal::read_VTK_points(file, mesh);
+  std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
+  internal::read_VTK_cell_types(file, cells, mesh);
+  internal::check_VTK_tail(file);
+  mesh.map_dimension = internal::dimension_of(mesh.map, mesh.simplex_size);
+  return mesh;
+}
+
+/// \ingroup PkgMeshUntanglingIO
+/// Writes the simplices and the map (the rest if there is no map) as a legacy
+/// ASCII VTK unstructured grid, with optional scalar fields (one value per
+/// simplex, resp. per vertex), e.g. to inspect inverted elements in ParaView.
+/// \throws Write_error if the mesh or a field is inconsistent, or the file
+/// cannot be written.
+inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_fields& cell_fields = {},
+                      const VTK_fields& point_fields = {})
+{
+  internal::check_for_writing(path, mesh);
+  const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
+  internal::check_VTK_fields(path, cell_fields, mesh.simplices.size(), "cell");
+  internal::check_VTK_fields(path, point_fields, points.size(), "point");
+  internal::Atomic_output_file file(path);
+  std::ostream& out = file.stream();
+  out << "# vtk DataFile Version 2.0\nMesh_untangling\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  out << "POINTS " << points.size() << " double\n";
+  for(const std::array<double, 3>& p : points) {
+    internal::write_point(out, p, 3);
+    out << '\n';
+  }
+  internal::write_VTK_cells(out, mesh);
+  internal::write_VTK_fields(out, cell_fields, mesh.simplices.size(), "CELL_DATA");
+  internal::write_VTK_fields(out, point_fields, points.size(), "POINT_DATA");
+  file.commit();
+}
+
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_VTK_H

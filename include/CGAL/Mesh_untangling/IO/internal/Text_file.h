@@ -1,0 +1,203 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_TEXT_FILE_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_TEXT_FILE_H
+
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+struct Token
+{
+  std::string_view text;
+  std::size_t line = 0;
+};
+
+inline std::string read_whole_file(const std::string& path)
+{
+  std::error_code ec;
+  if(!std::filesystem::exists(path, ec))
+    throw Read_error(path, 0, "file not found");
+  if(std::filesystem::is_directory(path, ec))
+    throw Read_error(path, 0, "is a directory, not a file");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Read_error(path, 0, "cannot open file: " + std::generic_category().message(errno));
+  std::string text;
+  std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if(!ec)
+    text.reserve(static_cast<std::size_t>(size));
+  std::vector<char> buffer(1 << 16);
+  while(in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
+    text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  if(in.bad())
+    throw Read_error(path, 0, "cannot read file");
+  return text;
+}
+
+// The whole file is held in memory so that tokens are cheap views and every
+// error can name its line; the mesh itself is larger than its text anyway.
+// Supports both token-stream formats (VTK, MEDIT) and line-structured ones
+// (OFF, OBJ, .input), where a row must not spill over to the next line.
+class Text_file
+{
+public:
+  /// `comment` starts a comment running to the end of the line ('\0': none).
+  explicit Text_file(const std::string& path, char comment = '\0')
+    : path_(path), text_(read_whole_file(path)), comment_(comment)
+  {
+    // Editors on Windows may prepend a UTF-8 byte order mark.
+    if(text_.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      pos_ = 3;
+    std::size_t line = 1;
+    for(char c : text_) {
+      if(c == '\n')
+        ++line;
+      else if(!is_blank(c))
+        last_line_ = line;
+    }
+  }
+
+  const std::string& path() const { return path_; }
+
+  /// The line a truncation error should point at: the last one with text.
+  std::size_t last_line() const { return last_line_; }
+
+  /// The next token, whatever line it is on; false at the end of the file.
+  bool next_token(Token& token)
+  {
+    for(;;) {
+      skip_blanks_on_line();
+      if(pos_ == text_.size())
+        return false;
+      if(text_[pos_] != '\n')
+        break;
+      ++pos_;
+      ++line_;
+    }
+    token = Token{take_word(), line_};
+    return true;
+  }
+
+  /// The tokens of the next line that has any; false at the end of the file.
+  bool next_line(std::vector<Token>& tokens)
+  {
+    tokens.clear();
+    while(tokens.empty()) {
+      if(pos_ == text_.size())
+        return false;
+      read_rest_of_line(tokens);
+    }
+    return true;
+  }
+
+  /// The rest of the current line, verbatim (free-text lines such as a VTK
+  /// title, which may even be empty); false at the end of the file.
+  bool next_raw_line(std::string_view& text, std::size_t& line)
+  {
+    if(pos_ == text_.size())
+      return false;
+    std::size_t end = text_.find('\n', pos_);
+    if(end == std::string::npos)
+      end = text_.size();
+    text = std::string_view(text_).substr(pos_, end - pos_);
+    if(!text.empty() && text.back() == '\r')
+      text.remove_suffix(1);
+    line = line_;
+    pos_ = end;
+    if(pos_ < text_.size()) {
+      ++pos_;
+      ++line_;
+    }
+    return true;
+  }
+
+  /// Upper bound on how many more items the file can hold, for reserve():
+  /// a huge count in a small file must fail as truncated, not exhaust memory.
+  std::size_t sane_capacity(std::size_t count) const
+  {
+    std::size_t remaining = text_.size() - pos_;
+    return count < remaining / 2 + 1 ? count : remaining / 2 + 1;
+  }
+
+  [[noreturn]] void fail(std::size_t line, const std::string& reason) const
+  {
+    throw Read_error(path_, line, reason);
+  }
+
+  [[noreturn]] void fail_truncated(const std::string& what) const
+  {
+    fail(last_line_, "truncated: " + what);
+  }
+
+private:
+  static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+  // Leaves pos_ on the '\n' ending the line, or at the end of the text.
+  void skip_blanks_on_line()
+  {
+    while(pos_ < text_.size()) {
+      char c = text_[pos_];
+      if(comment_ != '\0' && c == comment_) {
+        std::size_t end = text_.find('\n', pos_);
+        pos_ = (end == std::string::npos) ? text_.size() : end;
+        return;
+      }
+      if(!is_blank(c))
+        return;
+      ++pos_;
+    }
+  }
+
+  std::string_view take_word()
+  {
+    std::size_t begin = pos_;
+    while(pos_ < text_.size() && !is_blank(text_[pos_]) && text_[pos_] != '\n'
+          && !(comment_ != '\0' && text_[pos_] == comment_))
+      ++pos_;
+    return std::string_view(text_).substr(begin, pos_ - begin);
+  }
+
+  void read_rest_of_line(std::vector<Token>& tokens)
+  {
+    for(;;) {
+      skip_blanks_on_line();
+      if(pos_ == text_.size())
+        return;
+      if(text_[pos_] == '\n') {
+        ++pos_;
+        ++line_;
+        return;
+      }
+      tokens.push_back(Token{take_word(), line_});
+    }
+  }
+
+  std::string path_;
+  std::string text_;
+  char comment_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+  std::size_t last_line_ = 1;
+};
+
+} // namespace internal
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_TEXT_FILE_H

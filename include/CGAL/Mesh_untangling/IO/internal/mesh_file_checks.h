@@ -1,0 +1,96 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_MESH_FILE_CHECKS_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_MESH_FILE_CHECKS_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+// Writers check everything before creating any file: what they write must
+// read back, and a reader would reject exactly these defects.
+inline void check_geometry(const std::string& path, const std::vector<std::array<double, 3>>& points,
+                           int dimension, const std::string& name)
+{
+  if(dimension != 0 && dimension != 2 && dimension != 3)
+    throw Write_error(path, name + "_dimension is " + std::to_string(dimension) + "; expected 0, 2 or 3");
+  if(dimension == 0 && !points.empty())
+    throw Write_error(path, name + "_dimension is 0 but " + name + " has "
+                                + std::to_string(points.size()) + " positions");
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    for(int c = 0; c < dimension; ++c)
+      if(!std::isfinite(points[i][c]))
+        throw Write_error(path, name + " position " + std::to_string(i) + " is not finite");
+    if(dimension == 2 && points[i][2] != 0)
+      throw Write_error(path, name + "_dimension is 2 but " + name + " position "
+                                  + std::to_string(i) + " has z != 0");
+  }
+}
+
+inline void check_simplices(const std::string& path, const Mesh_file& mesh)
+{
+  const int k = mesh.simplex_size;
+  if(k != 3 && k != 4 && !(k == 0 && mesh.simplices.empty()))
+    throw Write_error(path, "simplex_size is " + std::to_string(k) + "; expected 3 or 4");
+  if(k == 4 && (mesh.rest_dimension == 2 || mesh.map_dimension == 2))
+    throw Write_error(path, "tetrahedra need 3D positions, but a dimension is 2");
+  const std::size_t n = mesh.number_of_vertices();
+  for(std::size_t i = 0; i < mesh.simplices.size(); ++i) {
+    std::string defect = simplex_defect(mesh.simplices[i], k, n, 0);
+    if(!defect.empty())
+      throw Write_error(path, std::string(simplex_name(k)) + " " + std::to_string(i) + ": " + defect);
+  }
+}
+
+inline void check_for_writing(const std::string& path, const Mesh_file& mesh)
+{
+  check_geometry(path, mesh.rest, mesh.rest_dimension, "rest");
+  check_geometry(path, mesh.map, mesh.map_dimension, "map");
+  if(!mesh.rest.empty() && !mesh.map.empty() && mesh.rest.size() != mesh.map.size())
+    throw Write_error(path, "rest has " + std::to_string(mesh.rest.size()) + " positions but map has "
+                                + std::to_string(mesh.map.size()));
+  check_simplices(path, mesh);
+  for(std::size_t id : mesh.fixed)
+    if(id >= mesh.number_of_vertices())
+      throw Write_error(path, "fixed vertex id " + std::to_string(id) + " is out of range "
+                                  + index_range(mesh.number_of_vertices(), 0));
+}
+
+struct Single_geometry
+{
+  const std::vector<std::array<double, 3>>* points;
+  int dimension;
+};
+
+// Formats with one geometry (OFF, VTK, MEDIT) write the map, the positions a
+// user wants to see; the rest only when there is no map.
+inline Single_geometry single_geometry(const Mesh_file& mesh)
+{
+  if(mesh.map_dimension != 0)
+    return Single_geometry{&mesh.map, mesh.map_dimension};
+  return Single_geometry{&mesh.rest, mesh.rest_dimension};
+}
+
+inline void check_triangles_only(const std::string& path, const Mesh_file& mesh, const char* format)
+{
+  if(mesh.simplex_size == 4)
+    throw Write_error(path, std::string(format) + " stores triangles only, not tetrahedra");
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_MESH_FILE_CHECKS_H

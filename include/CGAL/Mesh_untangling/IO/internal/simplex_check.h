@@ -1,0 +1,56 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_SIMPLEX_CHECK_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_SIMPLEX_CHECK_H
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+inline const char* simplex_name(int simplex_size)
+{
+  return simplex_size == 4 ? "tetrahedron" : "triangle";
+}
+
+inline std::string index_range(std::size_t number_of_vertices, std::size_t base)
+{
+  if(number_of_vertices == 0)
+    return "(there is no vertex)";
+  return "[" + std::to_string(base) + ", " + std::to_string(number_of_vertices - 1 + base) + "]";
+}
+
+// Why `ids` (in the file's numbering, starting at `base`) cannot be a simplex
+// of a mesh with `n` vertices; empty when it can. Shared by readers and
+// writers so that both sides accept exactly the same meshes.
+inline std::string simplex_defect(const std::array<std::size_t, 4>& ids, int simplex_size,
+                                  std::size_t n, std::size_t base)
+{
+  for(int i = 0; i < simplex_size; ++i)
+    if(ids[i] < base || ids[i] - base >= n)
+      return "vertex index " + std::to_string(ids[i]) + " is out of range " + index_range(n, base);
+  for(int i = 0; i < simplex_size; ++i)
+    for(int j = i + 1; j < simplex_size; ++j)
+      if(ids[i] == ids[j])
+        return "vertex " + std::to_string(ids[i]) + " is repeated";
+  return std::string();
+}
+
+inline std::array<std::size_t, 4> to_zero_based(std::array<std::size_t, 4> ids, int simplex_size,
+                                                std::size_t base)
+{
+  for(int i = 0; i < simplex_size; ++i)
+    ids[i] -= base;
+  return ids;
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_SIMPLEX_CHECK_H

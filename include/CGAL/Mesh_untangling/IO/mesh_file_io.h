@@ -1,0 +1,85 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_IO_MESH_FILE_IO_H
+#define CGAL_MESH_UNTANGLING_IO_MESH_FILE_IO_H
+
+#include <CGAL/Mesh_untangling/IO/MEDIT.h>
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/OBJ.h>
+#include <CGAL/Mesh_untangling/IO/OFF.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/TLC_input.h>
+#include <CGAL/Mesh_untangling/IO/VTK.h>
+
+#include <cctype>
+#include <filesystem>
+#include <string>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+inline const char* supported_extensions() { return "supported: .obj .off .vtk .mesh .input"; }
+
+inline std::string lowercase_extension(const std::string& path)
+{
+  std::string extension = std::filesystem::path(path).extension().string();
+  for(char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+inline std::string unsupported_extension(const std::string& path)
+{
+  const std::string extension = std::filesystem::path(path).extension().string();
+  const std::string what = extension.empty() ? "no file extension" : "unsupported file extension '" + extension + "'";
+  return what + " (" + supported_extensions() + ")";
+}
+
+} // namespace internal
+
+/// \ingroup PkgMeshUntanglingIO
+/// Reads a mesh file, choosing the format from the extension (case-insensitive):
+/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT) or `.input` (Du et al.).
+/// \throws Read_error if the extension is not one of these, or as the reader does.
+inline Mesh_file read_mesh_file(const std::string& path)
+{
+  const std::string extension = internal::lowercase_extension(path);
+  if(extension == ".obj")
+    return read_OBJ(path);
+  if(extension == ".off")
+    return read_OFF(path);
+  if(extension == ".vtk")
+    return read_VTK(path);
+  if(extension == ".mesh")
+    return read_MEDIT(path);
+  if(extension == ".input")
+    return read_TLC_input(path);
+  throw Read_error(path, 0, internal::unsupported_extension(path));
+}
+
+/// \ingroup PkgMeshUntanglingIO
+/// Writes a mesh file in the format given by the extension, as `read_mesh_file()`.
+/// \throws Write_error if the extension is not supported, or as the writer does.
+inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
+{
+  const std::string extension = internal::lowercase_extension(path);
+  if(extension == ".obj")
+    return write_OBJ(path, mesh);
+  if(extension == ".off")
+    return write_OFF(path, mesh);
+  if(extension == ".vtk")
+    return write_VTK(path, mesh);
+  if(extension == ".mesh")
+    return write_MEDIT(path, mesh);
+  if(extension == ".input")
+    return write_TLC_input(path, mesh);
+  throw Write_error(path, internal::unsupported_extension(path));
+}
+
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_MESH_FILE_IO_H

@@ -1,0 +1,678 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The file-format layer: round trips, malformed input, atomic writing, and
+// the external data sets (argv[1]; skipped with a message when absent).
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/handles.h>
+#include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+namespace IO = CGAL::Mesh_untangling::IO;
+using IO::Mesh_file;
+using IO::Read_error;
+using IO::Write_error;
+typedef std::array<double, 3> Point;
+typedef std::array<std::size_t, 4> Simplex;
+
+namespace {
+
+int failures = 0;
+
+void report_failure(int line, const std::string& message)
+{
+  ++failures;
+  std::cerr << __FILE__ << ":" << line << ": FAILED: " << message << std::endl;
+}
+
+#define CHECK(condition)                                 \
+  do {                                                   \
+    if(!(condition))                                     \
+      report_failure(__LINE__, "CHECK(" #condition ")"); \
+  } while(false)
+
+fs::path temp_dir;
+
+std::string temp_path(const std::string& name)
+{
+  return (temp_dir / name).string();
+}
+
+std::string write_text(const std::string& name, const std::string& content)
+{
+  const std::string path = temp_path(name);
+  std::ofstream out(path, std::ios::binary);
+  out << content;
+  return path;
+}
+
+std::string read_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool same_bits(double a, double b)
+{
+  std::uint64_t x, y;
+  std::memcpy(&x, &a, sizeof x);
+  std::memcpy(&y, &b, sizeof y);
+  return x == y;
+}
+
+bool same_points(const std::vector<Point>& a, const std::vector<Point>& b)
+{
+  if(a.size() != b.size())
+    return false;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+      if(!same_bits(a[i][c], b[i][c]))
+        return false;
+  return true;
+}
+
+bool same_mesh(const Mesh_file& a, const Mesh_file& b)
+{
+  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.rest_dimension == b.rest_dimension
+         && same_points(a.rest, b.rest) && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
+         && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
+}
+
+// Values that a printf("%g") writer would corrupt: full mantissas, tiny,
+// huge, subnormal, and negative zero.
+std::vector<Point> awkward_points(std::size_t n, int dimension, unsigned seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const double specials[] = {0.1, 1.0 / 3, -1e-300, 1e300, 4.9406564584124654e-324, -0.0, 2.0 / 3, 1e-7};
+  std::vector<Point> points(n, Point{0, 0, 0});
+  for(std::size_t i = 0; i < n; ++i)
+    for(int c = 0; c < dimension; ++c)
+      points[i][c] = (i * 3 + c) % 5 == 0 ? specials[(i + c) % 8] : uniform(random);
+  if(dimension == 2)
+    for(Point& p : points)
+      p[2] = 0;
+  return points;
+}
+
+// Two triangles of a square, and two tetrahedra sharing a face.
+Mesh_file triangle_mesh(int rest_dimension, int map_dimension)
+{
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.simplices = {{0, 1, 2, 0}, {0, 2, 3, 0}, {3, 2, 4, 0}};
+  m.rest_dimension = rest_dimension;
+  if(rest_dimension != 0)
+    m.rest = awkward_points(5, rest_dimension, 1);
+  m.map_dimension = map_dimension;
+  if(map_dimension != 0)
+    m.map = awkward_points(5, map_dimension, 2);
+  return m;
+}
+
+Mesh_file tet_mesh(bool with_rest)
+{
+  Mesh_file m;
+  m.simplex_size = 4;
+  m.simplices = {{0, 1, 2, 3}, {1, 2, 3, 4}};
+  if(with_rest) {
+    m.rest_dimension = 3;
+    m.rest = awkward_points(5, 3, 3);
+  }
+  m.map_dimension = 3;
+  m.map = awkward_points(5, 3, 4);
+  return m;
+}
+
+// What a one-geometry format (OFF, VTK, MEDIT) keeps of a mesh.
+Mesh_file map_only(Mesh_file m)
+{
+  m.rest.clear();
+  m.rest_dimension = 0;
+  m.has_fixed = false;
+  m.fixed.clear();
+  return m;
+}
+
+void check_round_trip(int line, const std::string& name, const Mesh_file& mesh, const Mesh_file& expected)
+{
+  const std::string path = temp_path(name);
+  try {
+    IO::write_mesh_file(path, mesh);
+    if(!same_mesh(IO::read_mesh_file(path), expected))
+      report_failure(line, "round trip through " + name + " changed the mesh");
+  } catch(const std::exception& e) {
+    report_failure(line, "round trip through " + name + " threw: " + e.what());
+  }
+}
+
+typedef std::function<void(const std::string&)> Reader;
+
+// The file is written under `name`; the error must name it, `line`, and `phrase`.
+void check_read_error(int caller, const Reader& read, const std::string& name, const std::string& content,
+                      std::size_t line, const std::string& phrase)
+{
+  const std::string path = write_text(name, content);
+  try {
+    read(path);
+    report_failure(caller, "no Read_error for " + name);
+  } catch(const Read_error& e) {
+    const std::string what = e.what();
+    const std::string where = line == 0 ? path + ": " : path + ":" + std::to_string(line) + ": ";
+    if(e.line() != line || e.file() != path || what.compare(0, where.size(), where) != 0
+       || what.find(phrase) == std::string::npos)
+      report_failure(caller, "got \"" + what + "\", expected line " + std::to_string(line) + " and '" + phrase + "'");
+  } catch(const std::exception& e) {
+    report_failure(caller, std::string("wrong exception type: ") + e.what());
+  }
+}
+
+void check_write_error(int caller, const std::function<void()>& write, const std::string& phrase)
+{
+  try {
+    write();
+    report_failure(caller, "no Write_error");
+  } catch(const Write_error& e) {
+    if(std::string(e.what()).find(phrase) == std::string::npos)
+      report_failure(caller, std::string("got \"") + e.what() + "\", expected '" + phrase + "'");
+  } catch(const std::exception& e) {
+    report_failure(caller, std::string("wrong exception type: ") + e.what());
+  }
+}
+
+const Reader read_input = [](const std::string& p) { IO::read_TLC_input(p); };
+const Reader read_off = [](const std::string& p) { IO::read_OFF(p); };
+const Reader read_vtk = [](const std::string& p) { IO::read_VTK(p); };
+const Reader read_medit = [](const std::string& p) { IO::read_MEDIT(p); };
+const Reader read_obj = [](const std::string& p) { IO::read_OBJ(p); };
+const Reader read_handles5 = [](const std::string& p) { IO::read_handles(p, 5); };
+
+#define CHECK_READ_ERROR(reader, name, content, line, phrase) \
+  check_read_error(__LINE__, reader, name, content, line, phrase)
+#define CHECK_WRITE_ERROR(statement, phrase) check_write_error(__LINE__, [&] { statement; }, phrase)
+
+// ---------------------------------------------------------------------------
+
+void test_round_trips()
+{
+  Mesh_file textured = triangle_mesh(2, 2);
+  check_round_trip(__LINE__, "planar.obj", textured, textured);
+  Mesh_file surface = triangle_mesh(3, 2);
+  check_round_trip(__LINE__, "surface.obj", surface, surface);
+
+  Mesh_file tets = tet_mesh(true);
+  tets.has_fixed = true;
+  tets.fixed = {0, 4};
+  check_round_trip(__LINE__, "tets.input", tets, tets);
+  surface.has_fixed = true;
+  check_round_trip(__LINE__, "surface.input", surface, surface);
+
+  check_round_trip(__LINE__, "tets.vtk", tets, map_only(tets));
+  check_round_trip(__LINE__, "tets.mesh", tets, map_only(tets));
+  check_round_trip(__LINE__, "planar.vtk", textured, map_only(textured));
+  check_round_trip(__LINE__, "planar.mesh", textured, map_only(textured));
+  check_round_trip(__LINE__, "planar.off", textured, map_only(textured));
+  Mesh_file spatial = triangle_mesh(0, 3);
+  check_round_trip(__LINE__, "spatial.off", spatial, spatial);
+  check_round_trip(__LINE__, "spatial.mesh", spatial, spatial);
+  check_round_trip(__LINE__, "upper-case.OFF", spatial, spatial);
+
+  // A mesh with only a map is written to OBJ as plain v lines: a rest.
+  Mesh_file as_rest = spatial;
+  std::swap(as_rest.rest, as_rest.map);
+  std::swap(as_rest.rest_dimension, as_rest.map_dimension);
+  check_round_trip(__LINE__, "plain.obj", spatial, as_rest);
+
+  const std::string handles = temp_path("round.handles");
+  IO::write_handles(handles, {4, 0, 2});
+  CHECK((IO::read_handles(handles, 5) == std::vector<std::size_t>{0, 2, 4}));
+}
+
+void test_readers_accept_variants()
+{
+  const std::string obj =
+      write_text("variants.obj", "# comment\nmtllib x.mtl\no object\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                                 "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvn 0 0 1\ng group\ns off\nusemtl m\n"
+                                 "f 1/1/1 2/2/1 3/3/1\nf -3/-3 -1/-1 -2/-2\n");
+  Mesh_file m = IO::read_OBJ(obj);
+  CHECK(m.rest_dimension == 2 && m.map_dimension == 2 && m.simplices.size() == 2);
+  CHECK((m.simplices[1] == Simplex{1, 3, 2, 0}) && m.map[3][0] == 1 && m.map[3][1] == 1);
+
+  m = IO::read_OBJ(write_text("untextured.obj", "v 0 0 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  CHECK(m.rest_dimension == 3 && m.map_dimension == 0 && m.map.empty());
+
+  m = IO::read_OFF(
+      write_text("comments.off", "# header\nOFF # plain\n3 1 0\n0 0 0\n1 0 0\n\n0 1 0\n3 0 1 2 255 0 0\n"));
+  CHECK(m.map_dimension == 2 && m.map.size() == 3 && m.simplices.size() == 1);
+  m = IO::read_OFF(write_text("one-line.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 1\n3 0 1 2\n"));
+  CHECK(m.map_dimension == 3 && m.map[2][2] == 1);
+
+  m = IO::read_MEDIT(write_text("mixed.mesh", "meshversionformatted 1\n# comment\ndimension\n3\nVertices\n4\n"
+                                              "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\nEdges\n1\n1 2 0\nCorners\n1\n1\n"
+                                              "Triangles\n1\n1 2 3 0\nTetrahedra\n1\n1 2 3 4 7\nEND\n"));
+  CHECK(m.simplex_size == 4 && (m.simplices == std::vector<Simplex>{{0, 1, 2, 3}}) && m.map_dimension == 3);
+
+  // VTK writers may put several points on a line, and add attribute data.
+  m = IO::read_VTK(write_text("multi.vtk", "# vtk DataFile Version 3.0\n\nascii\nDATASET UNSTRUCTURED_GRID\n"
+                                           "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nCELLS 1 4\n3 0 1 2\n"
+                                           "CELL_TYPES 1\n5\nCELL_DATA 1\nSCALARS q float 1\n"
+                                           "LOOKUP_TABLE default\n0.5\n"));
+  CHECK(m.simplex_size == 3 && m.map_dimension == 2 && m.map.size() == 3);
+
+  CHECK(IO::read_handles(write_text("empty.txt", ""), 0).empty());
+  CHECK((IO::read_handles(write_text("header.txt", "fixed vertices 3\n4 1\n1\n\n"), 5)
+         == std::vector<std::size_t>{1, 4}));
+
+  const std::string input = write_text("no-handles.input", "3 2\n0 0\n1 0\n0 1\n3 2\n0 0\n1 0\n0 1\n1 3\n0 1 2\n0\n");
+  m = IO::read_TLC_input(input);
+  CHECK(m.has_fixed && m.fixed.empty() && m.simplices.size() == 1);
+}
+
+const char* const good_input_head = "3 2\n0 0\n1 0\n0 1\n3 2\n0 0\n1 0\n0 1\n"; // 8 lines
+
+void test_input_errors()
+{
+  const std::string head = good_input_head;
+  CHECK_READ_ERROR(read_input, "trunc.input", "3 2\n0 0\n1 0\n", 3, "truncated: the rest block ends after 2 of 3");
+  CHECK_READ_ERROR(read_input, "empty.input", "", 1, "truncated: expected the rest block header");
+  CHECK_READ_ERROR(read_input, "no-handles.input", head + "1 3\n0 1 2\n", 10, "truncated: expected the handle count");
+  CHECK_READ_ERROR(read_input, "count.input", "3 2\n0 0\n1 0\n0 1\n4 2\n0 0\n", 5, "the initial block has 4 vertices");
+  CHECK_READ_ERROR(read_input, "dim.input", "3 4\n", 1, "dimRest is 4");
+  CHECK_READ_ERROR(read_input, "header.input", "3\n", 1, "expected the rest block header 'nV dimRest'");
+  CHECK_READ_ERROR(read_input, "range.input", head + "2 3\n0 1 2\n0 1 3\n0\n", 11,
+                   "triangle 1: vertex index 3 is out of range [0, 2]");
+  CHECK_READ_ERROR(read_input, "repeat.input", head + "1 3\n0 1 1\n0\n", 10, "triangle 0: vertex 1 is repeated");
+  CHECK_READ_ERROR(read_input, "nan.input", "3 2\n0 0\n1 nan\n", 3,
+                   "y coordinate of rest vertex 1 is not finite: 'nan'");
+  CHECK_READ_ERROR(read_input, "inf.input", "3 2\n0 0\n1 0\n-inf 1\n", 4,
+                   "x coordinate of rest vertex 2 is not finite");
+  CHECK_READ_ERROR(read_input, "huge-value.input", "3 2\n0 0\n1 1e999\n", 3, "is not finite");
+  CHECK_READ_ERROR(read_input, "garbage.input", "3 2\n0 0\n1 0.5x\n", 3, "is not a number: '0.5x'");
+  CHECK_READ_ERROR(read_input, "extra.input", "3 2\n0 0\n1 0 0\n", 3, "rest vertex 1: expected 2 coordinates, got 3");
+  CHECK_READ_ERROR(read_input, "k.input", head + "1 5\n", 9, "k is 5");
+  CHECK_READ_ERROR(read_input, "tet2d.input", head + "1 4\n", 9, "tetrahedra (k = 4) need 3D");
+  CHECK_READ_ERROR(read_input, "simplex-size.input", head + "1 3\n0 1\n0\n", 10,
+                   "triangle 0: expected 3 vertex indices, got 2");
+  CHECK_READ_ERROR(read_input, "handle.input", head + "1 3\n0 1 2\n2\n0\n3\n", 13,
+                   "handle 1: vertex id 3 is out of range");
+  CHECK_READ_ERROR(read_input, "handle-neg.input", head + "1 3\n0 1 2\n1\n-1\n", 12,
+                   "handle 0 is not a non-negative integer");
+  CHECK_READ_ERROR(read_input, "trailing.input", head + "1 3\n0 1 2\n0\n\n5\n", 13,
+                   "unexpected data after the handle block");
+  CHECK_READ_ERROR(read_input, "huge.input", "1000000000000000 2\n0 0\n", 2,
+                   "truncated: the rest block ends after 1 of 1000000000000000");
+  CHECK_READ_ERROR(read_input, "overflow.input", "99999999999999999999999 2\n", 1, "nV is not a non-negative integer");
+}
+
+void test_off_errors()
+{
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"; // 5 lines
+  CHECK_READ_ERROR(read_off, "noheader.off", "3 1 0\n", 1, "missing 'OFF' header");
+  CHECK_READ_ERROR(read_off, "coff.off", "# c\nCOFF\n", 2, "unsupported OFF variant 'COFF'");
+  CHECK_READ_ERROR(read_off, "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n", 7,
+                   "face 0 has 4 vertices; only triangles");
+  CHECK_READ_ERROR(read_off, "trunc.off", head, 5, "truncated: the face block ends after 0 of 1 faces");
+  CHECK_READ_ERROR(read_off, "trunc-v.off", "OFF\n3 1 0\n0 0 0\n", 3, "truncated: the vertex block ends after 1 of 3");
+  CHECK_READ_ERROR(read_off, "range.off", head + "3 0 1 3\n", 6, "face 0: vertex index 3 is out of range [0, 2]");
+  CHECK_READ_ERROR(read_off, "nan.off", "OFF\n# comment\n3 1 0\n0 0 0\n1 NaN 0\n", 5,
+                   "y coordinate of vertex 1 is not finite");
+  CHECK_READ_ERROR(read_off, "garbage.off", "OFF\n3 1 0\n0 0 0\n1 0 zero\n", 4,
+                   "z coordinate of vertex 1 is not a number");
+  CHECK_READ_ERROR(read_off, "extra.off", "OFF\n3 1 0\n0 0 0 0\n", 3, "vertex 0: expected 3 coordinates, got 4");
+  CHECK_READ_ERROR(read_off, "counts.off", "OFF\n3\n", 2, "expected the counts line");
+  CHECK_READ_ERROR(read_off, "trailing.off", head + "3 0 1 2\n3 0 1 2\n", 7, "unexpected data after the last face");
+  CHECK_READ_ERROR(read_off, "color.off", head + "3 0 1 2 red\n", 6, "unexpected 'red' after the 3 vertex indices");
+  CHECK_READ_ERROR(read_off, "huge.off", "OFF\n100000000000000 0 0\n0 0 0\n", 3, "truncated");
+}
+
+const char* const vtk_head = "# vtk DataFile Version 2.0\ntitle\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                             "POINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"; // 10 lines
+
+void test_vtk_errors()
+{
+  const std::string head = vtk_head;
+  CHECK_READ_ERROR(read_vtk, "binary.vtk", "# vtk DataFile Version 2.0\ntitle\nBINARY\nDATASET UNSTRUCTURED_GRID\n", 3,
+                   "binary VTK is not supported");
+  CHECK_READ_ERROR(read_vtk, "notvtk.vtk", "hello\n", 1, "not a legacy VTK file");
+  CHECK_READ_ERROR(read_vtk, "poly.vtk", "# vtk DataFile Version 2.0\nt\nASCII\nDATASET POLYDATA\n", 4,
+                   "expected UNSTRUCTURED_GRID, got 'POLYDATA'");
+  CHECK_READ_ERROR(read_vtk, "mixed.vtk", head + "CELLS 3 14\n4 0 1 2 3\n3 0 1 2\n4 1 2 3 4\nCELL_TYPES 3\n10\n5\n10\n",
+                   17, "mixed cell types: cell 1 is a triangle but cell 0 is a tetrahedron");
+  CHECK_READ_ERROR(read_vtk, "type.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n", 14, "cell 0 has VTK type 9");
+  CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\n", 12, "cell 0 has 8 vertices");
+  CHECK_READ_ERROR(read_vtk, "size.vtk", head + "CELLS 2 9\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n", 11,
+                   "CELLS announces a size of 9");
+  CHECK_READ_ERROR(read_vtk, "typecount.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n", 13,
+                   "CELL_TYPES has 2 entries but CELLS has 1");
+  CHECK_READ_ERROR(read_vtk, "typesize.vtk", head + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n10\n", 14,
+                   "cell 0 has type 10 (tetrahedron) but 3 vertices");
+  CHECK_READ_ERROR(read_vtk, "range.vtk", head + "CELLS 1 5\n4 0 1 2 5\n", 12,
+                   "cell 0: vertex index 5 is out of range [0, 4]");
+  CHECK_READ_ERROR(read_vtk, "repeat.vtk", head + "CELLS 1 5\n4 0 1 2 2\n", 12, "cell 0: vertex 2 is repeated");
+  CHECK_READ_ERROR(
+      read_vtk, "fewpoints.vtk",
+      "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n0 0 0\n1 0 0\nCELLS 1 4\n", 8,
+      "truncated: the POINTS block ends after 2 of 3 points (found 'CELLS')");
+  CHECK_READ_ERROR(read_vtk, "trunc.vtk", head + "CELLS 2 10\n4 0 1 2 3\n", 12,
+                   "truncated: the CELLS block ends after 1 of 2 cells");
+  CHECK_READ_ERROR(read_vtk, "nan.vtk",
+                   "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1 double\n0 nan 0\n", 6,
+                   "y coordinate of point 0 is not finite");
+  CHECK_READ_ERROR(read_vtk, "inf.vtk",
+                   "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1 double\n0 0 inf\n", 6,
+                   "z coordinate of point 0 is not finite");
+  CHECK_READ_ERROR(read_vtk, "datatype.vtk",
+                   "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1\n0 0 0\n", 6,
+                   "unknown POINTS data type '0'");
+  CHECK_READ_ERROR(read_vtk, "vtk5.vtk", head + "CELLS 2 4\nOFFSETS vtktypeint64\n0 4\n", 12,
+                   "VTK 5 OFFSETS/CONNECTIVITY");
+  CHECK_READ_ERROR(read_vtk, "tail.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n7\n", 15,
+                   "unexpected '7' after CELL_TYPES");
+  CHECK_READ_ERROR(
+      read_vtk, "huge.vtk",
+      "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 99999999999999 double\n0 0 0\n", 6,
+      "truncated: the POINTS block ends after 1 of 99999999999999");
+}
+
+void test_medit_errors()
+{
+  const std::string head =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"; // 8
+  CHECK_READ_ERROR(read_medit, "range.mesh", head + "Tetrahedra\n1\n1 2 3 5 0\nEnd\n", 11,
+                   "tetrahedron 1: vertex index 5 is out of range [1, 4]");
+  CHECK_READ_ERROR(read_medit, "zero.mesh", head + "Triangles\n2\n1 2 3 0\n0 1 2 0\nEnd\n", 12,
+                   "triangle 2: vertex index 0 is out of range [1, 4]");
+  CHECK_READ_ERROR(read_medit, "repeat.mesh", head + "Tetrahedra\n1\n1 2 3 3 0\n", 11,
+                   "tetrahedron 1: vertex 3 is repeated");
+  CHECK_READ_ERROR(read_medit, "tet2d.mesh", "MeshVersionFormatted 2\nDimension 2\nTetrahedra\n0\n", 3,
+                   "Tetrahedra in a mesh of Dimension 2");
+  CHECK_READ_ERROR(read_medit, "trunc.mesh", head + "Tetrahedra\n2\n1 2 3 4 0\n", 11,
+                   "truncated: the Tetrahedra block ends after 1 of 2");
+  CHECK_READ_ERROR(read_medit, "short.mesh",
+                   "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\nTriangles\n", 7,
+                   "truncated: the Vertices block ends after 2 of 3 entries (found 'Triangles')");
+  CHECK_READ_ERROR(read_medit, "nan.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 NaN 0\n", 5,
+                   "z coordinate of vertex 1 is not finite");
+  CHECK_READ_ERROR(read_medit, "garbage.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 1..5 0\n", 5,
+                   "is not a number: '1..5'");
+  CHECK_READ_ERROR(read_medit, "keyword.mesh", head + "Geometry\n\"x.geom\"\n", 9,
+                   "unsupported MEDIT keyword 'Geometry'");
+  CHECK_READ_ERROR(read_medit, "hex.mesh", head + "Hexahedra\n1\n1 2 3 4 1 2 3 4 0\n", 9,
+                   "Hexahedra are not supported");
+  CHECK_READ_ERROR(read_medit, "quad.mesh", head + "Quadrilaterals\n1\n1 2 3 4 0\n", 9,
+                   "Quadrilaterals are not supported");
+  CHECK_READ_ERROR(read_medit, "nodim.mesh", "MeshVersionFormatted 2\nVertices\n0\n", 2, "'Vertices' before Dimension");
+  CHECK_READ_ERROR(read_medit, "dim.mesh", "MeshVersionFormatted 2\nDimension 4\n", 2, "Dimension is 4");
+  CHECK_READ_ERROR(read_medit, "after-end.mesh", head + "End\nTriangles\n", 10, "unexpected data after End");
+  CHECK_READ_ERROR(read_medit, "twice.mesh", head + "Vertices\n0\n", 9,
+                   "second Vertices block (the first is at line 3)");
+  CHECK_READ_ERROR(read_medit, "huge.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n9999999999999\n0 0 0 0\n",
+                   5, "truncated");
+}
+
+void test_obj_errors()
+{
+  const std::string head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 5 5\n"; // 9 lines
+  CHECK_READ_ERROR(read_obj, "seam.obj", head + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", 11,
+                   "vertex 2 has two different texture coordinates (vt 2 and vt 5): per-corner texture coordinates "
+                   "(seams) are not supported");
+  CHECK_READ_ERROR(read_obj, "quad.obj", head + "f 1/1 2/2 4/4 3/3\n", 10,
+                   "face with 4 vertices; only triangles are supported");
+  CHECK_READ_ERROR(read_obj, "range.obj", head + "f 1 2 5\n", 10, "face 1: vertex index 5 is out of range [1, 4]");
+  CHECK_READ_ERROR(read_obj, "trange.obj", head + "f 1/1 2/10 3/3\n", 10, "texture index 10 is out of range [1, 5]");
+  CHECK_READ_ERROR(read_obj, "zero.obj", head + "f 0 1 2\n", 10, "vertex index is 0 (OBJ indices start at 1)");
+  CHECK_READ_ERROR(read_obj, "relative.obj", head + "f -5 -1 -2\n", 10,
+                   "vertex index -5 points before the first element");
+  CHECK_READ_ERROR(read_obj, "repeat.obj", head + "f 1 2 2\n", 10, "face 1: vertex 2 is repeated");
+  CHECK_READ_ERROR(read_obj, "nan.obj", "v 0 0 0\nv 0 nan 0\n", 2, "y coordinate of vertex 2 is not finite");
+  CHECK_READ_ERROR(read_obj, "garbage.obj", "v 0 0 0\nv 0 0 0\nvt 0 u\n", 3,
+                   "y coordinate of texture coordinate 1 is not a number");
+  CHECK_READ_ERROR(read_obj, "short.obj", "v 0 0\n", 1, "vertex 1: expected 'v x y z', got 2 numbers");
+  CHECK_READ_ERROR(read_obj, "mixed.obj", head + "f 1/1 2/2 3/3\nf 2 4 3\n", 11,
+                   "face corner without a texture coordinate");
+  CHECK_READ_ERROR(read_obj, "untextured.obj", head + "f 1/1 2/2 3/3\n", 4, "vertex 4 has no texture coordinate");
+  CHECK_READ_ERROR(read_obj, "curve.obj", head + "curv 0 1 1 2\n", 10, "unsupported OBJ statement 'curv'");
+  CHECK_READ_ERROR(read_obj, "corner.obj", head + "f 1/1/1/1 2 3\n", 10, "malformed face corner");
+}
+
+void test_handles_and_common_errors()
+{
+  CHECK_READ_ERROR(read_handles5, "range.txt", "handles\n0 1\n\n2 5\n", 4, "vertex id 5 is out of range [0, 4]");
+  CHECK_READ_ERROR(read_handles5, "late-header.txt", "0\nfixed\n", 2,
+                   "vertex id is not a non-negative integer: 'fixed'");
+  CHECK_READ_ERROR(read_handles5, "negative.txt", "-1\n", 1, "vertex id is not a non-negative integer: '-1'");
+  const Reader read_handles0 = [](const std::string& p) { IO::read_handles(p, 0); };
+  CHECK_READ_ERROR(read_handles0, "none.txt", "0\n", 1, "vertex id 0 is out of range (there is no vertex)");
+
+  for(const char* name :
+      {"missing.input", "missing.off", "missing.vtk", "missing.mesh", "missing.obj", "missing.txt"}) {
+    const std::string path = temp_path(name);
+    try {
+      if(fs::path(path).extension() == ".txt")
+        IO::read_handles(path, 5);
+      else
+        IO::read_mesh_file(path);
+      report_failure(__LINE__, std::string("no Read_error for ") + name);
+    } catch(const Read_error& e) {
+      CHECK(e.line() == 0 && std::string(e.what()) == path + ": file not found");
+    }
+  }
+  try {
+    IO::read_mesh_file(temp_dir.string() + "/dir.off");
+    report_failure(__LINE__, "no Read_error for a directory");
+  } catch(const Read_error& e) {
+    CHECK(std::string(e.what()).find("is a directory") != std::string::npos);
+  }
+  try {
+    IO::read_mesh_file(write_text("mesh.stl", "solid"));
+    report_failure(__LINE__, "no Read_error for .stl");
+  } catch(const Read_error& e) {
+    CHECK(std::string(e.what()).find("unsupported file extension '.stl' (supported: .obj .off .vtk .mesh .input)")
+          != std::string::npos);
+  }
+}
+
+bool has_temporary_files()
+{
+  for(const fs::directory_entry& entry : fs::recursive_directory_iterator(temp_dir))
+    if(entry.path().extension() == ".tmp")
+      return true;
+  return false;
+}
+
+void test_writer_errors()
+{
+  const Mesh_file tets = tet_mesh(true);
+  const std::string missing_dir = (temp_dir / "no-such-dir" / "out.vtk").string();
+  CHECK_WRITE_ERROR(IO::write_VTK(missing_dir, tets), "cannot create temporary file");
+  CHECK(!fs::exists(temp_dir / "no-such-dir"));
+
+  // A failing rename (the target is a directory) must not leave the temporary.
+  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("dir.off"), triangle_mesh(0, 3)), "cannot rename");
+
+  // A rejected mesh leaves an existing target untouched.
+  const std::string target = temp_path("kept.vtk");
+  IO::write_VTK(target, tets);
+  const std::string before = read_text(target);
+  Mesh_file bad = tets;
+  bad.simplices[1][3] = 5;
+  CHECK_WRITE_ERROR(IO::write_VTK(target, bad), "tetrahedron 1: vertex index 5 is out of range [0, 4]");
+  bad = tets;
+  bad.simplices[0][2] = 1;
+  CHECK_WRITE_ERROR(IO::write_MEDIT(target, bad), "tetrahedron 0: vertex 1 is repeated");
+  bad = tets;
+  bad.map[2][1] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_WRITE_ERROR(IO::write_VTK(target, bad), "map position 2 is not finite");
+  bad = tets;
+  bad.map.pop_back();
+  CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("bad.input"), bad), "rest has 5 positions but map has 4");
+  bad = triangle_mesh(2, 2);
+  bad.map[1][2] = 1;
+  CHECK_WRITE_ERROR(IO::write_OBJ(temp_path("bad.obj"), bad), "map_dimension is 2 but map position 1 has z != 0");
+  CHECK_WRITE_ERROR(IO::write_VTK(target, tets, {{"quality", {1.0}}}), "cell field 'quality' has 1 values, expected 2");
+  CHECK_WRITE_ERROR(IO::write_VTK(target, tets, {}, {{"bad name", std::vector<double>(5, 0.0)}}),
+                    "is empty or has blanks");
+  CHECK_WRITE_ERROR(IO::write_OBJ(temp_path("tets.obj"), tets), "OBJ stores triangles only");
+  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("tets.off"), tets), "OFF stores triangles only");
+  CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("map.input"), map_only(tets)), "needs both the rest and the map");
+  bad = tets;
+  bad.fixed = {7};
+  CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("fixed.input"), bad), "fixed vertex id 7 is out of range");
+  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("out.ply"), tets), "(supported: .obj .off .vtk .mesh .input)");
+  CHECK(read_text(target) == before);
+  CHECK(!fs::exists(temp_path("bad.input")) && !fs::exists(temp_path("tets.obj")) && !fs::exists(temp_path("out.ply")));
+
+  // Fields are written; the reader skips them.
+  IO::write_VTK(target, tets, {{"quality", {0.5, -2.25}}}, {{"fixed", {1, 0, 0, 0, 1}}});
+  const std::string text = read_text(target);
+  CHECK(text.find("CELL_DATA 2\nSCALARS quality double 1\nLOOKUP_TABLE default\n0.5\n-2.25\n") != std::string::npos);
+  CHECK(text.find("POINT_DATA 5\nSCALARS fixed double 1") != std::string::npos);
+  CHECK(same_mesh(IO::read_VTK(target), map_only(tets)));
+
+  CHECK(!has_temporary_files());
+}
+
+// ---------------------------------------------------------------------------
+// External data
+
+double orientation(const std::vector<Point>& x, const Simplex& s, int k)
+{
+  const Point& a = x[s[0]];
+  if(k == 3)
+    return (x[s[1]][0] - a[0]) * (x[s[2]][1] - a[1]) - (x[s[1]][1] - a[1]) * (x[s[2]][0] - a[0]);
+  Point u, v, w;
+  for(int c = 0; c < 3; ++c) {
+    u[c] = x[s[1]][c] - a[c];
+    v[c] = x[s[2]][c] - a[c];
+    w[c] = x[s[3]][c] - a[c];
+  }
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+// An independent check that coordinates and indices were read in the right
+// order: the README gives the number of inverted elements.
+std::size_t inverted(const std::vector<Point>& rest, const std::vector<Point>& map, const Mesh_file& mesh)
+{
+  std::size_t n = 0;
+  for(const Simplex& s : mesh.simplices)
+    if(!(orientation(rest, s, mesh.simplex_size) * orientation(map, s, mesh.simplex_size) > 0))
+      ++n;
+  return n;
+}
+
+struct Input_case
+{
+  const char* name;
+  std::size_t vertices, simplices, handles;
+  int rest_dimension, map_dimension, simplex_size;
+  std::size_t inverted; // README; 0: not checked
+};
+
+void test_tlc_data(const fs::path& data)
+{
+  const Input_case cases[] = {
+      {"tlc-cube64", 64, 162, 56, 3, 3, 4, 36},     {"cim-tet630", 630, 1722, 583, 3, 3, 4, 1},
+      {"cim-planar169", 169, 288, 48, 2, 2, 3, 41}, {"tlcpn-surface1024", 1024, 2000, 46, 3, 2, 3, 0},
+      {"sea-free51", 51, 50, 2, 2, 2, 3, 0},        {"isosea-free8", 8, 7, 2, 2, 2, 3, 0}};
+  for(const Input_case& c : cases) {
+    const std::string path = (data / "tlc-format" / (std::string(c.name) + ".input")).string();
+    try {
+      Mesh_file m = IO::read_mesh_file(path);
+      CHECK(m.rest.size() == c.vertices && m.map.size() == c.vertices && m.simplices.size() == c.simplices);
+      CHECK(m.has_fixed && m.fixed.size() == c.handles && m.fixed.back() < c.vertices);
+      CHECK(m.rest_dimension == c.rest_dimension && m.map_dimension == c.map_dimension
+            && m.simplex_size == c.simplex_size);
+      CHECK(c.inverted == 0 || inverted(m.rest, m.map, m) == c.inverted);
+      check_round_trip(__LINE__, std::string(c.name) + ".input", m, m);
+    } catch(const std::exception& e) {
+      report_failure(__LINE__, e.what());
+    }
+  }
+}
+
+void test_vtk_data(const fs::path& data)
+{
+  try {
+    Mesh_file init = IO::read_mesh_file((data / "lim" / "armadillo-598-init.vtk").string());
+    Mesh_file rest = IO::read_VTK((data / "lim" / "armadillo-598-rest.vtk").string());
+    CHECK(init.map.size() == 6077 && init.simplices.size() == 23982 && init.simplex_size == 4
+          && init.map_dimension == 3);
+    CHECK(init.rest.empty() && rest.simplices == init.simplices);
+    CHECK(inverted(rest.map, init.map, init) == 817);
+    check_round_trip(__LINE__, "armadillo.vtk", init, init);
+    check_round_trip(__LINE__, "armadillo.mesh", init, init);
+
+    const fs::path block = data / "cuboidblocks" / "i13c_s6.hexex_block432";
+    Mesh_file object = IO::read_VTK((block / "object.vtk").string());
+    Mesh_file parameter = IO::read_VTK((block / "parameter.vtk").string());
+    CHECK(object.map.size() == 665 && parameter.map.size() == object.map.size());
+    CHECK(object.simplices == parameter.simplices && inverted(object.map, parameter.map, parameter) == 27);
+    std::vector<std::size_t> handles = IO::read_handles((block / "handles.txt").string(), object.map.size());
+    CHECK(!handles.empty() && handles.back() < object.map.size());
+  } catch(const std::exception& e) {
+    report_failure(__LINE__, e.what());
+  }
+}
+
+void make_temp_dir()
+{
+  std::random_device seed;
+  for(int attempt = 0; attempt < 100; ++attempt) {
+    temp_dir = fs::temp_directory_path() / ("mesh_untangling_test_io_" + std::to_string(seed()));
+    if(fs::create_directory(temp_dir))
+      break;
+  }
+  fs::create_directory(temp_dir / "dir.off");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  make_temp_dir();
+  test_round_trips();
+  test_readers_accept_variants();
+  test_input_errors();
+  test_off_errors();
+  test_vtk_errors();
+  test_medit_errors();
+  test_obj_errors();
+  test_handles_and_common_errors();
+  test_writer_errors();
+
+  const fs::path data = argc > 1 ? fs::path(argv[1]) : fs::path();
+  if(argc > 1 && fs::is_directory(data / "tlc-format") && fs::is_directory(data / "lim")
+     && fs::is_directory(data / "cuboidblocks")) {
+    test_tlc_data(data);
+    test_vtk_data(data);
+  } else {
+    std::cout << "SKIPPED: external data checks (no data directory"
+              << (argc > 1 ? " at " + data.string() : std::string(" given")) << ")" << std::endl;
+  }
+
+  fs::remove_all(temp_dir);
+  if(failures != 0) {
+    std::cerr << failures << " check(s) failed" << std::endl;
+    return 1;
+  }
+  std::cout << "test_io: all checks passed" << std::endl;
+  return 0;
+}
