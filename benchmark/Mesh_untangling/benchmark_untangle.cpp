@@ -1,0 +1,719 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Benchmark of the untangler: every case with every solver, each run in a
+// forked child process so that peak memory is per run, and a crash or a hang
+// of one run does not stop the others.  Prints a markdown table and, per pair
+// of solvers, how many cases each solved and the median ratio of their times.
+//
+//   benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--markdown FILE] CASE...
+//
+// Run with --help for the forms of CASE.
+
+#include "generators.h"
+#include "untangle_mesh_file.h"
+
+#include <CGAL/Mesh_untangling/IO/handles.h>
+#include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <new>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+namespace MU = CGAL::Mesh_untangling;
+using namespace Mesh_untangling_tools;
+
+namespace {
+
+const char* const usage_text =
+  "usage: benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--markdown FILE] CASE...\n"
+  "\n"
+  "Runs the untangler on every CASE with every solver, each run in its own process,\n"
+  "and prints a markdown table (stdout, and FILE with --markdown).\n"
+  "\n"
+  "  --solver LIST        comma-separated solvers among newton, lbfgs (default: newton,lbfgs)\n"
+  "  --time-limit SECONDS time limit of one run (default: 120), passed to the untangler;\n"
+  "                       a run still going 30 s past it is killed (SIGKILL)\n"
+  "  --markdown FILE      also write the table and the summary to FILE\n"
+  "\n"
+  "A CASE is one of:\n"
+  "  FILE.input                       Du et al. format: rest, map and handles (fixed vertices)\n"
+  "  FOLDER/                          CuboidBlocks layout: object.vtk (rest), parameter.vtk (map),\n"
+  "                                   handles.txt (fixed vertex ids)\n"
+  "  REST:INIT                        two mesh files with the same elements (rest, tangled map);\n"
+  "                                   all boundary vertices fixed\n"
+  "  generated:square:N:AMPLITUDE:SEED  N x N grid of the unit square, interior vertices moved\n"
+  "  generated:cube:N:AMPLITUDE:SEED    by up to AMPLITUDE cells (random, SEED); boundary fixed\n"
+  "  all-fixed-boundary:DATA_DIR      every fixed-boundary case of the shared data: the LIM\n"
+  "                                   armadillo, four tlc-format files, every cuboidblocks folder\n";
+
+struct Usage_error
+{
+  std::string message;
+};
+
+// ---------------------------------------------------------------------------
+// Cases
+
+struct Case_spec
+{
+  enum Kind { INPUT_FILE, FOLDER, PAIR, GENERATED } kind = INPUT_FILE;
+  std::string name;    // for the table
+  std::string first;   // .input file, folder, or rest file
+  std::string second;  // init file of a pair
+  std::string shape;   // generated: "square" or "cube"
+  std::size_t n = 0;
+  double amplitude = 0;
+  std::uint32_t seed = 0;
+};
+
+template <class Number>
+bool parse_number(const std::string& text, Number& value)
+{
+  if(text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return false;
+  errno = 0;
+  char* end = nullptr;
+  if constexpr(std::is_floating_point_v<Number>) {
+    const double v = std::strtod(text.c_str(), &end);
+    if(errno != 0 || *end != '\0' || !std::isfinite(v)) return false;
+    value = v;
+  } else {
+    if(text[0] == '-' || text[0] == '+') return false;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if(errno != 0 || *end != '\0' || v > static_cast<unsigned long long>(std::numeric_limits<Number>::max()))
+      return false;
+    value = static_cast<Number>(v);
+  }
+  return true;
+}
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts;
+  std::size_t begin = 0;
+  for(;;) {
+    const std::size_t end = text.find(separator, begin);
+    parts.push_back(text.substr(begin, end == std::string::npos ? std::string::npos : end - begin));
+    if(end == std::string::npos) return parts;
+    begin = end + 1;
+  }
+}
+
+Case_spec generated_case(const std::string& argument)
+{
+  const std::vector<std::string> parts = split(argument, ':');
+  const std::string form = "'" + argument + "': expected generated:square|cube:N:AMPLITUDE:SEED";
+  if(parts.size() != 5) throw Usage_error{form};
+  Case_spec c;
+  c.kind = Case_spec::GENERATED;
+  c.name = argument;
+  c.shape = parts[1];
+  if(c.shape != "square" && c.shape != "cube")
+    throw Usage_error{form + " (unknown shape '" + c.shape + "')"};
+  const std::size_t max_n = c.shape == "square" ? 4000 : 200;
+  if(!parse_number(parts[2], c.n) || c.n < 2 || c.n > max_n)
+    throw Usage_error{form + " (N must be an integer in [2, " + std::to_string(max_n) + "])"};
+  if(!parse_number(parts[3], c.amplitude) || c.amplitude < 0)
+    throw Usage_error{form + " (AMPLITUDE must be a number >= 0)"};
+  if(!parse_number(parts[4], c.seed)) throw Usage_error{form + " (SEED must be an integer in [0, 2^32))"};
+  return c;
+}
+
+Case_spec folder_case(const fs::path& folder)
+{
+  for(const char* file : {"object.vtk", "parameter.vtk", "handles.txt"})
+    if(!fs::is_regular_file(folder / file))
+      throw Usage_error{"folder '" + folder.string() + "' has no " + file +
+                        " (a folder case holds object.vtk, parameter.vtk and handles.txt)"};
+  Case_spec c;
+  c.kind = Case_spec::FOLDER;
+  c.first = folder.string();
+  fs::path trimmed = folder;
+  if(!trimmed.has_filename()) trimmed = trimmed.parent_path();   // "NAME/" -> "NAME"
+  c.name = trimmed.filename().string();
+  if(c.name.empty() || c.name == ".") c.name = fs::absolute(trimmed).lexically_normal().filename().string();
+  return c;
+}
+
+Case_spec pair_case(const std::string& rest, const std::string& init)
+{
+  Case_spec c;
+  c.kind = Case_spec::PAIR;
+  c.first = rest;
+  c.second = init;
+  c.name = fs::path(rest).filename().string() + ":" + fs::path(init).filename().string();
+  return c;
+}
+
+Case_spec file_case(const std::string& path)
+{
+  if(MU::IO::internal::lowercase_extension(path) != ".input")
+    throw Usage_error{"'" + path + "': a single file must be a Du et al. .input file "
+                      "(for a rest and a map in two files, give REST:INIT)"};
+  Case_spec c;
+  c.kind = Case_spec::INPUT_FILE;
+  c.first = path;
+  c.name = fs::path(path).filename().string();
+  return c;
+}
+
+std::vector<Case_spec> all_fixed_boundary(const std::string& directory)
+{
+  const fs::path data(directory);
+  if(!fs::is_directory(data)) throw Usage_error{"all-fixed-boundary: '" + directory + "' is not a folder"};
+  std::vector<Case_spec> cases;
+  const fs::path rest = data / "lim" / "armadillo-598-rest.vtk", init = data / "lim" / "armadillo-598-init.vtk";
+  for(const fs::path& p : {rest, init})
+    if(!fs::is_regular_file(p)) throw Usage_error{"all-fixed-boundary: missing " + p.string()};
+  cases.push_back(pair_case(rest.string(), init.string()));
+  for(const char* name : {"tlc-cube64", "cim-tet630", "cim-planar169", "tlcpn-surface1024"}) {
+    const fs::path p = data / "tlc-format" / (std::string(name) + ".input");
+    if(!fs::is_regular_file(p)) throw Usage_error{"all-fixed-boundary: missing " + p.string()};
+    cases.push_back(file_case(p.string()));
+  }
+  const fs::path blocks = data / "cuboidblocks";
+  if(!fs::is_directory(blocks)) throw Usage_error{"all-fixed-boundary: missing folder " + blocks.string()};
+  std::vector<fs::path> folders;
+  for(const auto& entry : fs::directory_iterator(blocks))
+    if(entry.is_directory()) folders.push_back(entry.path());
+  std::sort(folders.begin(), folders.end());
+  for(const fs::path& folder : folders) cases.push_back(folder_case(folder));
+  return cases;
+}
+
+std::vector<Case_spec> parse_case(const std::string& argument)
+{
+  if(argument.rfind("generated:", 0) == 0) return {generated_case(argument)};
+  if(argument.rfind("all-fixed-boundary:", 0) == 0)
+    return all_fixed_boundary(argument.substr(std::string("all-fixed-boundary:").size()));
+  std::error_code error;
+  if(fs::is_directory(argument, error)) return {folder_case(argument)};
+  if(fs::is_regular_file(argument, error)) return {file_case(argument)};
+  // REST:INIT, split at the first ':' that leaves two existing files
+  for(std::size_t colon = argument.find(':'); colon != std::string::npos; colon = argument.find(':', colon + 1)) {
+    const std::string rest = argument.substr(0, colon), init = argument.substr(colon + 1);
+    if(fs::is_regular_file(rest, error) && fs::is_regular_file(init, error)) return {pair_case(rest, init)};
+  }
+  throw Usage_error{"'" + argument + "' is neither a file, a folder, a REST:INIT pair of existing files, "
+                    "generated:... nor all-fixed-boundary:..."};
+}
+
+struct Problem
+{
+  Mesh_file mesh;
+  std::vector<bool> is_fixed;
+};
+
+Mesh_file read_rest_and_map(const std::string& rest_path, const std::string& map_path)
+{
+  Mesh_file mesh = MU::IO::read_mesh_file(map_path);
+  Mesh_file rest = MU::IO::read_mesh_file(rest_path);
+  if(rest.simplices != mesh.simplices || rest.simplex_size != mesh.simplex_size)
+    throw std::runtime_error(rest_path + " and " + map_path + " do not have the same elements");
+  if(rest.map.size() != mesh.map.size())
+    throw std::runtime_error(rest_path + " has " + std::to_string(rest.map.size()) + " vertices, " + map_path +
+                             " " + std::to_string(mesh.map.size()));
+  mesh.rest = rest.map;
+  mesh.rest_dimension = rest.map_dimension;
+  return mesh;
+}
+
+Problem load(const Case_spec& c)
+{
+  Problem p;
+  switch(c.kind) {
+    case Case_spec::INPUT_FILE:
+      p.mesh = MU::IO::read_mesh_file(c.first);
+      break;
+    case Case_spec::FOLDER: {
+      const fs::path folder(c.first);
+      p.mesh = read_rest_and_map((folder / "object.vtk").string(), (folder / "parameter.vtk").string());
+      p.mesh.fixed = MU::IO::read_handles((folder / "handles.txt").string(), p.mesh.map.size());
+      p.mesh.has_fixed = true;
+      break;
+    }
+    case Case_spec::PAIR: {
+      p.mesh = read_rest_and_map(c.first, c.second);
+      const std::vector<bool> boundary = boundary_vertices(p.mesh);
+      p.mesh.fixed.clear();
+      for(std::size_t v = 0; v < boundary.size(); ++v)
+        if(boundary[v]) p.mesh.fixed.push_back(v);
+      p.mesh.has_fixed = true;
+      break;
+    }
+    case Case_spec::GENERATED:
+      p.mesh = c.shape == "square" ? make_square_grid(c.n) : make_cube_grid(c.n);
+      perturb_interior(p.mesh, c.n, c.amplitude, c.seed);
+      break;
+  }
+  p.is_fixed.assign(p.mesh.number_of_vertices(), false);
+  for(std::size_t v : p.mesh.fixed)
+    if(v < p.is_fixed.size()) p.is_fixed[v] = true;
+  return p;
+}
+
+// ---------------------------------------------------------------------------
+// The child: loads the case, untangles it, and sends "key value" lines.
+
+void write_all(int fd, const std::string& text)
+{
+  const char* data = text.data();
+  std::size_t left = text.size();
+  while(left > 0) {
+    const ssize_t written = ::write(fd, data, left);
+    if(written < 0) {
+      if(errno == EINTR) continue;
+      return;   // the parent is gone: nothing to report to
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+}
+
+std::string one_line(std::string text)
+{
+  for(char& ch : text)
+    if(ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+  return text;
+}
+
+std::string short_status(MU::Untangling_status status)
+{
+  switch(status) {
+    case MU::Untangling_status::SUCCESS: return "success";
+    case MU::Untangling_status::INVERTED_ELEMENTS_LEFT: return "inverted elements left";
+    case MU::Untangling_status::COVERINGS_LEFT: return "coverings left";
+    case MU::Untangling_status::TIME_LIMIT_REACHED: return "time limit reached";
+    case MU::Untangling_status::NUMERICAL_FAILURE: return "numerical failure";
+    case MU::Untangling_status::INVALID_INPUT: return "invalid input";
+  }
+  return "unknown status";
+}
+
+void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit)
+{
+  auto send = [fd](const std::string& key, const std::string& value) { write_all(fd, key + "\t" + value + "\n"); };
+  try {
+    Problem p = load(c);
+    std::size_t fixed = 0;
+    for(bool f : p.is_fixed) fixed += f;
+    send("vertices", std::to_string(p.mesh.number_of_vertices()));
+    send("elements", std::to_string(p.mesh.simplices.size()));
+    send("fixed", std::to_string(fixed));
+    const Verdict before = check_mesh_file(p.mesh, p.is_fixed);
+    send("inverted_before", std::to_string(before.inverted));
+    send("input_defects", std::to_string(before.input_defects));
+
+    Run_options options;
+    options.solver = solver;
+    options.max_seconds = time_limit;
+    const auto start = std::chrono::steady_clock::now();
+    const Untangling_result result = untangle_mesh_file(p.mesh, p.is_fixed, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    send("seconds", std::to_string(seconds));
+    send("eps_steps", std::to_string(result.outer_iterations));
+    send("evaluations", std::to_string(result.energy_evaluations));
+    send("status", short_status(result.status));
+    send("status_success", result.status == MU::Untangling_status::SUCCESS ? "1" : "0");
+
+    const Verdict after = check_mesh_file(p.mesh, p.is_fixed);
+    send("inverted_after", std::to_string(after.inverted));
+    send("overwound", std::to_string(after.overwound_vertices + after.overwound_edges));
+    send("check_success", after.locally_invertible ? "1" : "0");
+    send("done", "1");
+  } catch(const std::bad_alloc&) {
+    send("error", "out of memory");
+  } catch(const Invalid_problem& e) {
+    send("error", std::string("invalid problem: ") + one_line(e.what()));
+  } catch(const std::exception& e) {
+    send("error", one_line(e.what()));
+  } catch(...) {
+    send("error", "unknown exception");
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The parent: one row per case and solver.
+
+struct Row
+{
+  std::string case_name;
+  std::string solver;
+  std::map<std::string, std::string> values;   // what the child sent
+  bool success = false;
+  std::string outcome;        // "yes", or why not
+  double wall_seconds = 0;    // as seen by the parent, loading included
+  double peak_mib = -1;       // -1: unknown
+
+  std::string get(const std::string& key, const std::string& missing = "—") const
+  {
+    const auto it = values.find(key);
+    return it == values.end() ? missing : it->second;
+  }
+  bool has(const std::string& key) const { return values.count(key) != 0; }
+  double seconds() const { return std::stod(get("seconds", "0")); }
+};
+
+std::string format_fixed(double value, int decimals)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string format_plain(double value)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+std::string format_seconds(double seconds) { return format_fixed(seconds, seconds < 1 ? 3 : 2); }
+
+void parse_child_output(const std::string& text, Row& row)
+{
+  std::istringstream in(text);
+  std::string line;
+  while(std::getline(in, line)) {
+    const std::size_t tab = line.find('\t');
+    if(tab == std::string::npos) continue;
+    row.values[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+}
+
+// The untangler checks its time limit between eps steps only: a run is
+// killed this long after the limit.
+constexpr double kill_margin_seconds = 30;
+
+Row run_case(const Case_spec& c, const std::string& solver, double time_limit)
+{
+  Row row;
+  row.case_name = c.name;
+  row.solver = solver;
+
+  int fds[2];
+  if(::pipe(fds) != 0) {
+    row.outcome = std::string("not run: pipe: ") + std::strerror(errno);
+    return row;
+  }
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = ::fork();
+  if(pid < 0) {
+    row.outcome = std::string("not run: fork: ") + std::strerror(errno);
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return row;
+  }
+  if(pid == 0) {
+    ::close(fds[0]);
+    child_run(fds[1], c, solver, time_limit);
+    ::close(fds[1]);
+    ::_exit(0);   // no destructor, no flush of the parent's buffers
+  }
+  ::close(fds[1]);
+
+  const double hard_limit = time_limit + kill_margin_seconds;
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  std::string received;
+  bool killed = false, pipe_open = true, exited = false;
+  int status = 0;
+  struct rusage usage;
+  std::memset(&usage, 0, sizeof usage);
+  while(!exited) {
+    const double left = hard_limit - elapsed();
+    if(left <= 0 && !killed) {
+      ::kill(pid, SIGKILL);
+      killed = true;
+    }
+    if(killed) {   // reap it, whatever is left in the pipe
+      while(::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {}
+      exited = true;
+      break;
+    }
+    const int timeout_ms = static_cast<int>(std::min(left * 1000 + 1, 1000.));
+    if(pipe_open) {
+      struct pollfd p = {fds[0], POLLIN, 0};
+      const int ready = ::poll(&p, 1, timeout_ms);
+      if(ready > 0) {
+        char buffer[4096];
+        const ssize_t got = ::read(fds[0], buffer, sizeof buffer);
+        if(got > 0) received.append(buffer, static_cast<std::size_t>(got));
+        else if(got == 0 || errno != EINTR) pipe_open = false;
+      }
+    } else {
+      const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+      if(done == pid) exited = true;
+      else ::usleep(10000);
+    }
+  }
+  ::close(fds[0]);
+  row.wall_seconds = elapsed();
+  row.peak_mib = usage.ru_maxrss / 1024.;   // KiB on Linux; the child's alone (wait4), killed or not
+  parse_child_output(received, row);
+
+  if(killed) {
+    row.outcome = "killed: still running after " + format_plain(hard_limit) + " s";
+  } else if(WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    row.outcome = "crashed: signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
+    if(signal == SIGKILL) row.outcome += ", out of memory?";
+  } else if(row.has("error")) {
+    row.outcome = "error: " + row.get("error");
+  } else if(!row.has("done")) {
+    row.outcome = "no result: child exited with code " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+  } else {
+    const bool status_ok = row.get("status_success") == "1", check_ok = row.get("check_success") == "1";
+    row.success = status_ok && check_ok;
+    if(row.success) row.outcome = "yes";
+    else if(status_ok) row.outcome = "no: status success, but the check finds it not locally invertible";
+    else if(check_ok) row.outcome = "no: locally invertible, but status " + row.get("status");
+    else row.outcome = "no: " + row.get("status");
+  }
+  return row;
+}
+
+// ---------------------------------------------------------------------------
+// Output
+
+std::string escape_cell(std::string text)
+{
+  std::string out;
+  for(char ch : text) {
+    if(ch == '|') out += '\\';
+    out += ch;
+  }
+  return out;
+}
+
+std::size_t display_width(const std::string& text)
+{
+  std::size_t width = 0;
+  for(unsigned char ch : text) width += (ch & 0xC0) != 0x80;   // UTF-8 code points
+  return width;
+}
+
+std::string table(const std::vector<Row>& rows)
+{
+  const std::vector<std::string> header = {"case", "#vertices", "#elements", "#fixed", "solver",
+                                           "inverted before", "inverted after", "input defects", "success",
+                                           "seconds", "eps steps", "energy evaluations", "peak memory (MiB)"};
+  std::vector<std::vector<std::string>> cells;
+  for(const Row& r : rows) {
+    cells.push_back({r.case_name, r.get("vertices"), r.get("elements"), r.get("fixed"), r.solver,
+                     r.get("inverted_before"), r.get("inverted_after"), r.get("input_defects"), r.outcome,
+                     r.has("seconds") ? format_seconds(r.seconds()) : "—", r.get("eps_steps"),
+                     r.get("evaluations"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—"});
+    for(std::string& cell : cells.back()) cell = escape_cell(cell);
+  }
+  std::vector<std::size_t> width(header.size());
+  for(std::size_t k = 0; k < header.size(); ++k) {
+    width[k] = display_width(header[k]);
+    for(const auto& line : cells) width[k] = std::max(width[k], display_width(line[k]));
+  }
+  // numbers right-aligned, text left-aligned
+  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8; };
+  std::ostringstream out;
+  auto print_line = [&](const std::vector<std::string>& line) {
+    out << "|";
+    for(std::size_t k = 0; k < line.size(); ++k) {
+      const std::string pad(width[k] - display_width(line[k]), ' ');
+      out << " " << (numeric(k) ? pad + line[k] : line[k] + pad) << " |";
+    }
+    out << "\n";
+  };
+  print_line(header);
+  out << "|";
+  for(std::size_t k = 0; k < header.size(); ++k)
+    out << (numeric(k) ? std::string(width[k] + 1, '-') + ":" : ":" + std::string(width[k] + 1, '-')) << "|";
+  out << "\n";
+  for(const auto& line : cells) print_line(line);
+  return out.str();
+}
+
+double median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+std::string join(const std::vector<std::string>& names)
+{
+  if(names.empty()) return "none";
+  std::string out;
+  for(const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& cases,
+                    const std::vector<std::string>& solvers)
+{
+  // rows are ordered case by case, solver by solver
+  auto row_of = [&](std::size_t c, std::size_t s) -> const Row& { return rows[c * solvers.size() + s]; };
+  std::ostringstream out;
+  for(std::size_t a = 0; a < solvers.size(); ++a)
+    for(std::size_t b = a + 1; b < solvers.size(); ++b) {
+      std::size_t solved_a = 0, solved_b = 0;
+      std::vector<double> ratios;
+      std::vector<std::string> only_a, only_b;
+      for(std::size_t c = 0; c < cases.size(); ++c) {
+        const Row& ra = row_of(c, a);
+        const Row& rb = row_of(c, b);
+        solved_a += ra.success;
+        solved_b += rb.success;
+        if(ra.success && rb.success) ratios.push_back(std::max(rb.seconds(), 1e-6) / std::max(ra.seconds(), 1e-6));
+        else if(ra.success) only_a.push_back(cases[c].name);
+        else if(rb.success) only_b.push_back(cases[c].name);
+      }
+      out << "\n**" << solvers[a] << " vs " << solvers[b] << "** (" << cases.size() << " cases): "
+          << solvers[a] << " solved " << solved_a << ", " << solvers[b] << " solved " << solved_b << ".\n\n";
+      if(ratios.empty())
+        out << "- median time ratio " << solvers[b] << "/" << solvers[a] << ": no case solved by both\n";
+      else
+        out << "- median time ratio " << solvers[b] << "/" << solvers[a] << ": " << format_fixed(median(ratios), 2)
+            << " over the " << ratios.size() << " case(s) both solved (min " << format_fixed(*std::min_element(ratios.begin(), ratios.end()), 2)
+            << ", max " << format_fixed(*std::max_element(ratios.begin(), ratios.end()), 2) << ")\n";
+      out << "- solved only by " << solvers[a] << ": " << escape_cell(join(only_a)) << "\n";
+      out << "- solved only by " << solvers[b] << ": " << escape_cell(join(only_b)) << "\n";
+    }
+  if(solvers.size() == 1) {
+    std::size_t solved = 0;
+    for(const Row& r : rows) solved += r.success;
+    out << "\n" << solvers[0] << " solved " << solved << " of " << cases.size() << " cases.\n";
+  }
+  return out.str();
+}
+
+// ---------------------------------------------------------------------------
+
+struct Arguments
+{
+  std::vector<std::string> solvers = {"newton", "lbfgs"};
+  double time_limit = 120;
+  std::string markdown;
+  std::vector<Case_spec> cases;
+};
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  Arguments a;
+  std::vector<std::string> case_arguments;
+  bool options_done = false;
+  for(int i = 1; i < argc; ++i) {
+    std::string argument = argv[i];
+    if(options_done || argument.empty() || argument[0] != '-') {
+      case_arguments.push_back(argument);
+      continue;
+    }
+    if(argument == "--") { options_done = true; continue; }
+    if(argument == "-h" || argument == "--help") {
+      std::cout << usage_text;
+      std::exit(0);
+    }
+    std::string name = argument, value;
+    const std::size_t equal = argument.find('=');
+    if(equal != std::string::npos) {
+      name = argument.substr(0, equal);
+      value = argument.substr(equal + 1);
+    }
+    if(name != "--solver" && name != "--time-limit" && name != "--markdown")
+      throw Usage_error{"unknown option '" + name + "'"};
+    if(equal == std::string::npos) {
+      if(i + 1 >= argc) throw Usage_error{name + " needs a value"};
+      value = argv[++i];
+    }
+    if(name == "--solver") {
+      a.solvers = split(value, ',');
+      for(std::size_t k = 0; k < a.solvers.size(); ++k) {
+        if(a.solvers[k] != "newton" && a.solvers[k] != "lbfgs")
+          throw Usage_error{"unknown solver '" + a.solvers[k] + "' (newton, lbfgs)"};
+        if(std::find(a.solvers.begin(), a.solvers.begin() + k, a.solvers[k]) != a.solvers.begin() + k)
+          throw Usage_error{"solver '" + a.solvers[k] + "' is listed twice"};
+      }
+    } else if(name == "--time-limit") {
+      if(!parse_number(value, a.time_limit) || !(a.time_limit > 0))
+        throw Usage_error{"--time-limit: '" + value + "' is not a positive number of seconds"};
+    } else {
+      if(value.empty()) throw Usage_error{"--markdown needs a file name"};
+      a.markdown = value;
+    }
+  }
+  if(case_arguments.empty()) throw Usage_error{"no case given"};
+  for(const std::string& argument : case_arguments)
+    for(Case_spec& c : parse_case(argument)) a.cases.push_back(std::move(c));
+  return a;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Arguments arguments;
+  std::ofstream markdown;
+  try {
+    arguments = parse_arguments(argc, argv);
+    if(!arguments.markdown.empty()) {
+      markdown.open(arguments.markdown);   // opened now, so that a bad path fails before hours of runs
+      if(!markdown) throw Usage_error{"--markdown: cannot write '" + arguments.markdown + "'"};
+    }
+  } catch(const Usage_error& e) {
+    std::cerr << "benchmark_untangle: " << e.message << "\n\n" << usage_text;
+    return 2;
+  }
+
+  std::vector<Row> rows;
+  const std::size_t total = arguments.cases.size() * arguments.solvers.size();
+  std::size_t index = 0;
+  for(const Case_spec& c : arguments.cases)
+    for(const std::string& solver : arguments.solvers) {
+      const std::string label = "[" + std::to_string(++index) + "/" + std::to_string(total) + "] " + c.name + " " + solver;
+      std::cerr << label << ": started" << std::endl;
+      rows.push_back(run_case(c, solver, arguments.time_limit));
+      const Row& r = rows.back();
+      std::cerr << label << ": " << (r.success ? "success" : r.outcome) << ", "
+                << (r.has("seconds") ? format_seconds(r.seconds()) + " s untangling, " : std::string())
+                << format_seconds(r.wall_seconds) << " s in all, "
+                << (r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : std::string("?")) << " MiB" << std::endl;
+    }
+
+  std::ostringstream report;
+  report << "Time limit " << format_plain(arguments.time_limit) << " s per run (killed at "
+         << format_plain(arguments.time_limit + kill_margin_seconds) << " s). inverted before/after: elements inverted "
+         << "relative to their rest element (exact predicates); success: the result is locally invertible "
+         << "(check) and the untangler reports success; seconds: the untangling call alone.\n\n"
+         << table(rows) << summary(rows, arguments.cases, arguments.solvers);
+  std::cout << report.str() << std::flush;
+  if(markdown.is_open()) {
+    markdown << report.str();
+    markdown.close();
+    if(!markdown) std::cerr << "benchmark_untangle: could not write " << arguments.markdown << std::endl;
+  }
+  return 0;
+}
