@@ -17,6 +17,12 @@
 namespace CGAL {
 
 namespace Mesh_untangling {
+
+/// \ingroup PkgMeshUntanglingRef
+/// How target sizes relate to the map (`Mesh_untangling::parameters::target_scaling`):
+/// `AUTOMATIC`, `AS_GIVEN` or `MATCH_MAP_VOLUME`.
+using internal::Target_scaling;
+
 namespace internal {
 
 /// Reads the parameters every entry point shares.
@@ -180,6 +186,13 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_points);
   const auto options = Mesh_untangling::internal::read_options(np);
 
+  if constexpr(Mesh_untangling::internal::is_given<std::decay_t<decltype(rest)>>()) {
+    if(std::size_t(rest.size()) != std::size_t(points.size())) {
+      Mesh_untangling::Untangling_result invalid;
+      invalid.message = std::to_string(rest.size()) + " rest points for " + std::to_string(points.size()) + " points";
+      return invalid;
+    }
+  }
   auto input = Mesh_untangling::internal::make_soup_input<d>(points, simplices, fixed, rest);
   const auto result = Mesh_untangling::internal::untangle<d>(input, options);
   if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT)

@@ -128,7 +128,13 @@ Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed
 std::vector<int> reference_orientations(const Mesh_file& mesh)
 {
   std::vector<int> orientation(mesh.simplices.size(), 1);
-  if(mesh.rest.empty() || (mesh.simplex_size == 3 && mesh.rest_dimension == 3)) return orientation;
+  if(mesh.rest.empty()) {
+    // regular targets take the orientation of most of the map, as in the untangler
+    const int sign = mesh.simplex_size == 3 ? MU::internal::map_volume_sign<2>(make_input<2>(mesh, {}))
+                                            : MU::internal::map_volume_sign<3>(make_input<3>(mesh, {}));
+    return std::vector<int>(mesh.simplices.size(), sign);
+  }
+  if(mesh.simplex_size == 3 && mesh.rest_dimension == 3) return orientation;
   // Same rule as the untangler: the sign of each rest simplex, flat ones take the majority's.
   const auto signs = mesh.simplex_size == 3 ? MU::simplex_orientations<2>(points_of<2>(mesh.rest), simplices_of<2>(mesh))
                                             : MU::simplex_orientations<3>(points_of<3>(mesh.rest), simplices_of<3>(mesh));

@@ -64,7 +64,7 @@ public:
     for(int j = 0; j < number_of_free_; ++j)
       for(int c = 0; c < d; ++c)
         nnz[d * j + c] = d * (column_start_[j + 1] - column_start_[j]);
-    matrix_.reserve(nnz);
+    if(N > 0) matrix_.reserve(nnz);   // Eigen reads past an empty reserve list
     for(int j = 0; j < number_of_free_; ++j)
       for(int c = 0; c < d; ++c)
         for(int i : rows[j])

@@ -144,6 +144,19 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
   return on_boundary;
 }
 
+/// Sign of the total signed volume of the map (+1 when zero).
+template <int d>
+int map_volume_sign(const Untangling_input<d>& in)
+{
+  double volume = 0;
+  for(const auto& e : in.elements) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
+    for(int i = 0; i <= d; ++i) image[i] = in.positions[e[i]];
+    volume += simplex_volume<d>(image);
+  }
+  return volume < 0 ? -1 : 1;
+}
+
 /// Checks the input and builds the normalized problem; throws
 /// std::invalid_argument with a message naming the element or vertex.
 template <int d>
@@ -196,8 +209,11 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   std::vector<char> degenerate(m, 0);
   double total = 0;
   int majority = 0;
+  // Without targets, regular simplices take the orientation of most of the map.
+  const bool map_is_negative = in.targets.empty() && map_volume_sign<d>(in) < 0;
   for(std::size_t k = 0; k < m; ++k) {
     targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
+    if(map_is_negative) std::swap(targets[k][0], targets[k][1]);
     const double vol = simplex_volume<d>(targets[k]);
     degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
     if(!degenerate[k]) { total += std::abs(vol); majority += vol > 0 ? 1 : -1; }

@@ -68,7 +68,15 @@ public:
   {
     using Domain_point = typename boost::property_traits<DomainMap>::value_type;
     constexpr int domain_dimension = Ambient_dimension<Domain_point>::value;
+    // The mesh's own indices may have holes (a Surface_mesh with removed
+    // vertices): number the vertices in the order of vertices(tm) instead.
     auto index = get_initialized_vertex_index_map(tm_);
+    std::vector<std::size_t> rank;
+    for(std::size_t i = 0; i < vertices_.size(); ++i) {
+      const std::size_t j = get(index, vertices_[i]);
+      if(j >= rank.size()) rank.resize(j + 1);
+      rank[j] = i;
+    }
     Untangling_input<2> in;
     for(vertex_descriptor v : vertices_) {
       in.positions.push_back(to_vector<2>(get(uv, v)));
@@ -82,7 +90,7 @@ public:
       for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) {
         if(k == 3) break;
         corners[k] = get(domain, v);
-        simplex[k++] = get(index, v);
+        simplex[k++] = rank[get(index, v)];
       }
       if(k != 3 || degree(f, tm_) != 3) {
         error_ = "face " + std::to_string(face_number) + " is not a triangle";
