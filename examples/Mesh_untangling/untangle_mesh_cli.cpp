@@ -18,6 +18,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <utility>
 
 namespace IO = CGAL::Mesh_untangling::IO;
 namespace MU = CGAL::Mesh_untangling;
@@ -50,10 +52,39 @@ std::string default_output(const std::string& input)
   return (p.parent_path() / (p.stem().string() + "-untangled" + p.extension().string())).string();
 }
 
+/// The same file, or (for files not yet there) the same normalized path.
 bool same_file(const std::string& a, const std::string& b)
 {
   std::error_code ec;
-  return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+  if(fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+  const fs::path na = fs::weakly_canonical(fs::absolute(a, ec), ec), nb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+  return !ec && na == nb;
+}
+
+/// Every file read must survive the run, and the two outputs must not collide;
+/// checked before untangling, so that a bad path costs no time and writes nothing.
+void check_output_paths(const Arguments& args)
+{
+  const std::string ext = lowercase_extension(args.output);
+  if(ext != ".obj" && ext != ".off" && ext != ".vtk" && ext != ".mesh" && ext != ".input")
+    throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
+                      "' (supported: .obj .off .vtk .mesh .input)");
+  const std::pair<const char*, const std::string*> inputs[] = {
+    {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
+  for(const std::string* output : {&args.output, &args.report}) {
+    if(output->empty()) continue;
+    for(const auto& in : inputs)
+      if(!in.second->empty() && same_file(*in.second, *output))
+        throw Usage_error(*output + ": refusing to overwrite " + in.first);
+    std::error_code ec;
+    const fs::path dir = fs::path(*output).parent_path();
+    if(!dir.empty() && !fs::is_directory(dir, ec))
+      throw Usage_error(*output + ": directory '" + dir.string() + "' does not exist");
+    if(fs::is_directory(*output, ec))
+      throw Usage_error(*output + ": is a directory");
+  }
+  if(!args.report.empty() && same_file(args.report, args.output))
+    throw Usage_error(args.report + ": the report and the result would be the same file");
 }
 
 /// The map to untangle, with its rest geometry, as the file formats give it.
@@ -133,8 +164,8 @@ Mesh_file as_written(const Mesh_file& mesh, const std::string& output)
   return checked;
 }
 
-void write_report(const Arguments& args, const std::string& fixed_source, const Mesh_file& mesh,
-                  const MU::Untangling_result& r, const Verdict& v)
+void write_report(IO::internal::Atomic_output_file& file, const Arguments& args, const std::string& fixed_source,
+                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -168,7 +199,6 @@ void write_report(const Arguments& args, const std::string& fixed_source, const 
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
   j["seconds"] = r.seconds;
-  IO::internal::Atomic_output_file file(args.report);
   file.stream() << j.dump(2) << "\n";
   file.commit();
 }
@@ -176,14 +206,11 @@ void write_report(const Arguments& args, const std::string& fixed_source, const 
 int run(const Arguments& args)
 {
   if(args.output.empty()) throw Usage_error("no output file");
-  if(same_file(args.input, args.output) || fs::path(args.input) == fs::path(args.output))
-    throw Usage_error(args.output + ": refusing to overwrite the input");
-  if(!args.rest.empty() && same_file(args.rest, args.output))
-    throw Usage_error(args.output + ": refusing to overwrite the rest file");
   if(!args.fixed.empty() && args.fix_boundary)
     throw Usage_error("--fixed and --fix-boundary exclude each other");
 
   Mesh_file mesh = read_problem(args);
+  check_output_paths(args);
   std::string fixed_source;
   const std::vector<bool> fixed = fixed_vertices(args, mesh, fixed_source);
   check_output_format(args.output, mesh);
@@ -200,9 +227,13 @@ int run(const Arguments& args)
     };
   const MU::Untangling_result result = untangle_mesh_file(mesh, fixed, options);
 
+  // The report's temporary file is opened first: if it cannot be created,
+  // nothing is written at all.
+  std::optional<IO::internal::Atomic_output_file> report;
+  if(!args.report.empty()) report.emplace(args.report);
   IO::write_mesh_file(args.output, output_content(mesh, args.output));
   const Verdict verdict = check_mesh_file(as_written(mesh, args.output), fixed);
-  if(!args.report.empty()) write_report(args, fixed_source, mesh, result, verdict);
+  if(report) write_report(*report, args, fixed_source, mesh, result, verdict);
 
   if(!args.quiet)
     std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, %.2f s\n",

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Set-up (scripts/setup.sh), then the main job on generated samples: a
+# tangled 2D square (40 x 40 grid, 3,200 triangles) and a tangled cube
+# (8 x 8 x 8 grid, 3,072 tetrahedra), both with a fixed boundary, untangled
+# by build/bin/untangle_mesh.  Results and JSON reports go to build/sample/.
+# Exit status: 0 if both results are locally invertible, else non-zero.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+"$ROOT/scripts/setup.sh"
+
+BIN=$ROOT/build/bin
+SAMPLE=$ROOT/build/sample
+mkdir -p "$SAMPLE"
+"$BIN/make_tangled_mesh" square 40 2 1 "$SAMPLE/square.input"
+"$BIN/make_tangled_mesh" cube 8 1.0 1 "$SAMPLE/cube.input"
+
+# figure REPORT KEY: one value of a JSON report written by untangle_mesh.
+figure() {
+  sed -nE "s/^  \"$2\": (.*)\$/\1/p" "$1" | sed -E 's/,$//; s/^"(.*)"$/\1/'
+}
+
+status=0
+summary=()
+for name in square cube; do
+  echo
+  echo "== untangle_mesh $SAMPLE/$name.input"
+  rc=0
+  "$BIN/untangle_mesh" "$SAMPLE/$name.input" -o "$SAMPLE/$name-untangled.input" \
+    --report "$SAMPLE/$name.json" || rc=$?
+  if [ "$rc" != 0 ]; then
+    echo "run_sample.sh: untangle_mesh failed on $name (exit code $rc)" >&2
+    status=1
+  fi
+  if [ -f "$SAMPLE/$name.json" ]; then
+    r=$SAMPLE/$name.json
+    summary+=("$(printf '%-7s %8s %9s %7s %9s %8s %10s %12s %6s %8s' "$name" \
+      "$(figure "$r" vertices)" "$(figure "$r" elements)" "$(figure "$r" fixed_vertices)" \
+      "$(figure "$r" inverted_before)" "$(figure "$r" inverted_after)" "$(figure "$r" locally_invertible)" \
+      "$(figure "$r" min_scaled_det_after | cut -c1-10)" "$(figure "$r" outer_iterations)" \
+      "$(figure "$r" seconds | cut -c1-6)")")
+  fi
+done
+
+echo
+printf '%-7s %8s %9s %7s %9s %8s %10s %12s %6s %8s\n' sample vertices elements fixed "inverted" "inverted" "locally" "min scaled" "eps" seconds
+printf '%-7s %8s %9s %7s %9s %8s %10s %12s %6s %8s\n' "" "" "" "" before after invertible "det J after" steps ""
+for line in "${summary[@]}"; do echo "$line"; done
+echo
+echo "results and reports: $SAMPLE/{square,cube}-untangled.input, $SAMPLE/{square,cube}.json"
+exit $status

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Set-up (scripts/setup.sh), then the whole test suite with ctest in build/.
+# Extra arguments go to ctest (e.g. -R test_cli, -V).
+#
+# usage: scripts/run_tests.sh [--sanitize] [CTEST ARGUMENTS...]
+#   --sanitize  build and test in build-asan/ instead (Debug, AddressSanitizer
+#               and UndefinedBehaviorSanitizer); slower.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+sanitize=0
+ctest_args=()
+for arg in "$@"; do
+  if [ "$arg" = --sanitize ]; then sanitize=1; else ctest_args+=("$arg"); fi
+done
+
+if [ "$sanitize" = 1 ]; then
+  "$ROOT/scripts/setup.sh" --sanitize
+  BUILD_DIR=$ROOT/build-asan
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:strict_string_checks=1}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+else
+  "$ROOT/scripts/setup.sh"
+  BUILD_DIR=$ROOT/build
+fi
+
+cd "$BUILD_DIR"
+exec ctest --output-on-failure -j "${JOBS:-2}" ${ctest_args[@]+"${ctest_args[@]}"}

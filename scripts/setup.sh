@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Installs the Debian packages that are missing, then configures and builds
+# the project in build/ (Release).  Idempotent: quiet about packages unless
+# one is missing; a second run only rebuilds what changed.
+#
+# usage: scripts/setup.sh [--sanitize]
+#   --sanitize  build in build-asan/ instead: Debug, AddressSanitizer and
+#               UndefinedBehaviorSanitizer (-DMESH_UNTANGLING_SANITIZE=ON)
+# Environment: JOBS (parallel build jobs, default 2).
+set -euo pipefail
+trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD_DIR=$ROOT/build
+CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release)
+for arg in "$@"; do
+  case $arg in
+    --sanitize)
+      BUILD_DIR=$ROOT/build-asan
+      CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DMESH_UNTANGLING_SANITIZE=ON) ;;
+    -h|--help)
+      sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      exit 0 ;;
+    *)
+      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize])" >&2
+      exit 2 ;;
+  esac
+done
+
+# 1. Packages (Debian).
+PACKAGES=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
+          libsuitesparse-dev liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev libmpfr-dev)
+installed() { [[ "$(dpkg -s "$1" 2> /dev/null)" == *"Status: install ok installed"* ]]; }
+if ! command -v dpkg > /dev/null 2>&1; then
+  echo "setup.sh: dpkg not found: this script installs Debian packages; install these by hand:" >&2
+  echo "  ${PACKAGES[*]}" >&2
+  exit 1
+fi
+missing=()
+for package in "${PACKAGES[@]}"; do
+  installed "$package" || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup.sh: installing missing packages: ${missing[*]}"
+  SUDO=()
+  if [ "$(id -u)" != 0 ]; then
+    if ! command -v sudo > /dev/null 2>&1; then
+      echo "setup.sh: not root and no sudo: install these packages as root: ${missing[*]}" >&2
+      exit 1
+    fi
+    SUDO=(sudo)
+    [ -t 0 ] || SUDO=(sudo -n)   # no terminal (CI): never wait for a password
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${SUDO[@]}" apt-get update -qq
+  "${SUDO[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  for package in "${missing[@]}"; do
+    if ! installed "$package"; then
+      echo "setup.sh: package $package is still not installed" >&2
+      exit 1
+    fi
+  done
+fi
+
+# 2. Configure (output kept in a log, shown on failure) and build.
+mkdir -p "$BUILD_DIR"
+if ! cmake -S "$ROOT" -B "$BUILD_DIR" "${CMAKE_ARGS[@]}" > "$BUILD_DIR/configure.log" 2>&1; then
+  cat "$BUILD_DIR/configure.log" >&2
+  echo "setup.sh: FAILED: cmake configuration (log: $BUILD_DIR/configure.log)" >&2
+  exit 1
+fi
+cmake --build "$BUILD_DIR" -j "${JOBS:-2}"
+echo "setup.sh: built in $BUILD_DIR"

@@ -1,0 +1,423 @@
+#!/usr/bin/env bash
+# Command-line tests of untangle_mesh: exit codes (0 locally invertible,
+# 1 not, 2 bad usage or input), what is written (and that nothing is written
+# on bad input), error messages, the JSON report, fixed vertices and the
+# real data sets when present.
+#
+# usage: test_cli.sh UNTANGLE_MESH MAKE_TANGLED_MESH [DATA_DIR]
+# Set TEST_CLI_NO_PYTHON=1 to check the reports with grep instead of python3.
+set -u
+
+if [ $# -lt 2 ]; then
+  echo "usage: $0 UNTANGLE_MESH MAKE_TANGLED_MESH [DATA_DIR]" >&2
+  exit 2
+fi
+UNTANGLE=$1
+MAKE=$2
+DATA=${3:-}
+for program in "$UNTANGLE" "$MAKE"; do
+  if [ ! -x "$program" ]; then
+    echo "error: $program is not an executable" >&2
+    exit 2
+  fi
+done
+# The tests run in a temporary directory: make the paths absolute.
+absolute() { case $1 in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
+UNTANGLE=$(absolute "$UNTANGLE")
+MAKE=$(absolute "$MAKE")
+[ -z "$DATA" ] || DATA=$(absolute "$DATA")
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/test_cli.XXXXXX") || exit 2
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 2
+
+failures=0
+checks=0
+# check DESCRIPTION COMMAND...: the command must succeed.
+check() {
+  local what=$1
+  shift
+  checks=$((checks + 1))
+  if ! "$@"; then
+    failures=$((failures + 1))
+    echo "FAIL: $what" >&2
+  fi
+}
+
+have_python=0
+if [ -z "${TEST_CLI_NO_PYTHON:-}" ] && command -v python3 > /dev/null 2>&1; then
+  have_python=1
+fi
+
+# json_get FILE KEY: the value of a top-level key (true/false, a number or a
+# quoted string), empty if the file does not parse or has no such key.
+json_get() {
+  if [ "$have_python" = 1 ]; then
+    python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+if sys.argv[2] in d: print(json.dumps(d[sys.argv[2]]))' "$1" "$2" 2> /dev/null
+  else
+    grep -E "^  \"$2\": " "$1" 2> /dev/null | head -n 1 | sed -E 's/^  "[^"]*": //; s/,$//'
+  fi
+}
+json_is() { [ "$(json_get "$1" "$2")" = "$3" ]; }
+json_positive() { local v; v=$(json_get "$1" "$2"); [[ "$v" =~ ^[0-9]+$ ]] && [ "$v" -gt 0 ]; }
+json_parses() {
+  if [ "$have_python" = 1 ]; then
+    python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$1" 2> /dev/null
+  else
+    [ -s "$1" ] && head -c 1 "$1" | grep -q '{' && tail -n 1 "$1" | grep -q '^}$'
+  fi
+}
+
+# run NAME ARGS...: runs the tool, keeps NAME.out, NAME.err and NAME.rc.
+run() {
+  local name=$1
+  shift
+  "$UNTANGLE" "$@" > "$name.out" 2> "$name.err"
+  echo $? > "$name.rc"
+}
+rc_is() { [ "$(cat "$1.rc")" = "$2" ]; }
+err_has() { grep -Eq -- "$2" "$1.err"; }
+empty() { [ ! -s "$1" ]; }
+no_crash() { ! grep -Eiq 'terminate called|Sanitizer|runtime error|Segmentation|Aborted|core dumped' "$1.err"; }
+
+# handle_rows FILE.input: "id x y [z]" of every handle of a Du et al. file,
+# each coordinate as the double it reads as (%.17g), so that only the
+# layout (tabs or spaces) may differ between files.
+handle_rows() {
+  awk '
+    NR == 1 { n = $1; next }
+    NR <= n + 1 { next }
+    NR == n + 2 { next }
+    NR <= 2 * n + 2 { r = ""; for (i = 1; i <= NF; ++i) r = r sprintf(" %.17g", $i); row[NR - n - 3] = r; next }
+    NR == 2 * n + 3 { s = $1; next }
+    NR <= 2 * n + 3 + s { next }
+    { for (i = 1; i <= NF; ++i) { if (!seen_count) { seen_count = 1; continue } print $i row[$i] } }
+  ' "$1"
+}
+handle_count() { awk 'NR == 1 { n = $1 } NR == 2 * n + 3 { s = $1 } NR == 2 * n + 4 + s { print $1; exit }' "$1"; }
+map_rows() { awk 'NR == 1 { n = $1 } NR > n + 2 && NR <= 2 * n + 2' "$1"; }
+
+#
+# Samples
+#
+"$MAKE" square 40 2 1 square.input > /dev/null || { echo "FAIL: make_tangled_mesh square" >&2; exit 1; }
+"$MAKE" cube 8 1.0 1 cube.input > /dev/null || { echo "FAIL: make_tangled_mesh cube" >&2; exit 1; }
+# Smaller problems for the variants, so that the script stays fast under sanitizers.
+"$MAKE" square 12 2 5 small.input > /dev/null || { echo "FAIL: make_tangled_mesh small square" >&2; exit 1; }
+"$MAKE" cube 4 1.0 2 small3d.input > /dev/null || { echo "FAIL: make_tangled_mesh small cube" >&2; exit 1; }
+"$MAKE" square 10 2 3 square10.obj > /dev/null || { echo "FAIL: make_tangled_mesh obj" >&2; exit 1; }
+"$MAKE" square 4 2 1 s4.obj > /dev/null && "$MAKE" square 4 2 1 s4.off > /dev/null \
+  && "$MAKE" square 4 2 1 s4.vtk > /dev/null && "$MAKE" square 4 2 1 s4.mesh > /dev/null \
+  && "$MAKE" cube 3 1 1 c3.vtk > /dev/null || { echo "FAIL: make_tangled_mesh small samples" >&2; exit 1; }
+check "generated square has 160 handles" [ "$(handle_count square.input)" = 160 ]
+
+#
+# Good runs
+#
+# Generated square, default output name, report, progress on stderr.
+run sq square.input --report sq.json
+check "square: exit 0" rc_is sq 0
+check "square: default output square-untangled.input" test -s square-untangled.input
+check "square: report parses" json_parses sq.json
+check "square: locally_invertible true" json_is sq.json locally_invertible true
+check "square: inverted_before > 0" json_positive sq.json inverted_before
+check "square: inverted_after 0" json_is sq.json inverted_after 0
+check "square: fixed_vertices 160" json_is sq.json fixed_vertices 160
+check "square: dimension 2" json_is sq.json dimension 2
+check "square: solver newton" json_is sq.json solver '"newton"'
+check "square: one progress line per step" \
+  [ "$(grep -c '^step ' sq.err)" = "$(json_get sq.json outer_iterations)" ]
+check "square: at least one step" json_positive sq.json outer_iterations
+check "square: summary line on stderr" err_has sq '^locally invertible: inverted [1-9][0-9]* -> 0'
+check "square: nothing on stdout" empty sq.out
+check "square: handles unchanged" [ "$(handle_rows square.input)" = "$(handle_rows square-untangled.input)" ]
+check "square: 160 handle rows compared" [ "$(handle_rows square.input | wc -l)" = 160 ]
+check "square: free vertices moved" [ "$(map_rows square.input)" != "$(map_rows square-untangled.input)" ]
+# The result reads back and is already untangled.
+run sq_again square-untangled.input -o again.input --report again.json -q
+check "square result re-read: exit 0" rc_is sq_again 0
+check "square result re-read: inverted_before 0" json_is again.json inverted_before 0
+
+# --quiet: nothing at all on stderr or stdout.
+run quiet small.input -o quiet.input --quiet
+check "--quiet: exit 0" rc_is quiet 0
+check "--quiet: stderr empty" empty quiet.err
+check "--quiet: stdout empty" empty quiet.out
+
+# Output formats; each re-reads.
+run sq_vtk small.input -o out.vtk -q
+check "-o out.vtk: exit 0" rc_is sq_vtk 0
+check "-o out.vtk: legacy VTK header" grep -q '^# vtk DataFile' out.vtk
+run sq_vtk_back out.vtk --rest small.input -o back.vtk --report back_vtk.json -q
+check "out.vtk --rest small.input: exit 0" rc_is sq_vtk_back 0
+check "out.vtk re-read: inverted_before 0" json_is back_vtk.json inverted_before 0
+check "out.vtk re-read: 169 vertices" json_is back_vtk.json vertices 169
+run sq_mesh small.input -o out.mesh -q
+check "-o out.mesh: exit 0" rc_is sq_mesh 0
+check "-o out.mesh: MEDIT header, dimension 2" grep -q '^Dimension 2' out.mesh
+run sq_mesh_back out.mesh --rest small.input -o back.input --report back_mesh.json -q
+check "out.mesh --rest small.input: exit 0" rc_is sq_mesh_back 0
+check "out.mesh re-read: inverted_before 0" json_is back_mesh.json inverted_before 0
+run sq_obj small.input -o out.obj -q
+check "-o out.obj: exit 0" rc_is sq_obj 0
+check "-o out.obj: has v and vt" [ "$(grep -c '^vt ' out.obj)" = 169 ] && [ "$(grep -c '^v ' out.obj)" = 169 ]
+run sq_obj_back out.obj -o back.obj --report back_obj.json -q
+check "out.obj re-read: exit 0" rc_is sq_obj_back 0
+check "out.obj re-read: inverted_before 0" json_is back_obj.json inverted_before 0
+check "out.obj re-read: 288 triangles" json_is back_obj.json elements 288
+
+# L-BFGS.
+run lbfgs small.input -o lbfgs.input --solver lbfgs --report lbfgs.json -q
+check "--solver lbfgs: exit 0" rc_is lbfgs 0
+check "--solver lbfgs: reported" json_is lbfgs.json solver '"lbfgs"'
+check "--solver lbfgs: small square was tangled" json_positive lbfgs.json inverted_before
+check "--solver lbfgs: inverted_after 0" json_is lbfgs.json inverted_after 0
+check "--solver lbfgs: handles unchanged" [ "$(handle_rows small.input)" = "$(handle_rows lbfgs.input)" ]
+
+# --fix-boundary on an OBJ (v = domain, vt = map).
+run fixb square10.obj --fix-boundary --report fixb.json -q
+check "--fix-boundary obj: exit 0" rc_is fixb 0
+check "--fix-boundary obj: default output square10-untangled.obj" test -s square10-untangled.obj
+check "--fix-boundary obj: 40 fixed" json_is fixb.json fixed_vertices 40
+check "--fix-boundary obj: source boundary" json_is fixb.json fixed '"boundary"'
+check "--fix-boundary obj: inverted_before > 0" json_positive fixb.json inverted_before
+check "--fix-boundary obj: domain (v) unchanged" [ "$(grep '^v ' square10.obj)" = "$(grep '^v ' square10-untangled.obj)" ]
+# vt of the boundary of the 11 x 11 grid (vt k belongs to vertex k in both files).
+boundary_vt() {
+  awk '$1 == "vt" { k = n++; x = k % 11; y = int(k / 11)
+                    if (x == 0 || x == 10 || y == 0 || y == 10) printf "%d %.17g %.17g\n", k, $2, $3 }' "$1"
+}
+check "--fix-boundary obj: 40 boundary vt compared" [ "$(boundary_vt square10.obj | wc -l)" = 40 ]
+check "--fix-boundary obj: boundary vt unchanged" [ "$(boundary_vt square10.obj)" = "$(boundary_vt square10-untangled.obj)" ]
+check "--fix-boundary obj: interior vt moved" [ "$(grep '^vt ' square10.obj)" != "$(grep '^vt ' square10-untangled.obj)" ]
+# --fixed with a handle file: the listed vertices keep their position.
+awk 'NR == 1 { n = $1 } NR == 2 * n + 3 { s = $1 } NR > 2 * n + 4 + s' small.input > handles.txt
+run fixedfile small.input --fixed handles.txt -o fixedfile.input --report fixedfile.json -q
+check "--fixed FILE: exit 0" rc_is fixedfile 0
+check "--fixed FILE: 48 fixed" json_is fixedfile.json fixed_vertices 48
+check "--fixed FILE: source is the file" json_is fixedfile.json fixed '"handles.txt"'
+check "--fixed FILE: handles unchanged" [ "$(handle_rows small.input)" = "$(handle_rows fixedfile.input)" ]
+
+# Generated cube.
+run cube cube.input --report cube.json -q
+check "cube: exit 0" rc_is cube 0
+check "cube: default output cube-untangled.input" test -s cube-untangled.input
+check "cube: report parses" json_parses cube.json
+check "cube: locally_invertible true" json_is cube.json locally_invertible true
+check "cube: inverted_before > 0" json_positive cube.json inverted_before
+check "cube: inverted_after 0" json_is cube.json inverted_after 0
+check "cube: fixed_vertices 386" json_is cube.json fixed_vertices 386
+check "cube: dimension 3" json_is cube.json dimension 3
+check "cube: handles unchanged" [ "$(handle_rows cube.input)" = "$(handle_rows cube-untangled.input)" ]
+check "cube: 386 handle rows compared" [ "$(handle_rows cube.input | wc -l)" = 386 ]
+run cube_vtk small3d.input -o cube.vtk --report cube_vtk.json -q
+check "cube -o .vtk: exit 0" rc_is cube_vtk 0
+check "cube -o .vtk: small cube was tangled" json_positive cube_vtk.json inverted_before
+check "cube -o .vtk: tetrahedra (type 10)" grep -qx '10' cube.vtk
+run cube_vtk_back cube.vtk --rest small3d.input -o cube_back.mesh --report cube_back.json -q
+check "cube .vtk re-read: exit 0" rc_is cube_vtk_back 0
+check "cube .vtk re-read: inverted_before 0" json_is cube_back.json inverted_before 0
+check "cube .vtk re-read: -o .mesh has Tetrahedra" grep -q '^Tetrahedra' cube_back.mesh
+run cube_mesh_back cube_back.mesh --rest small3d.input -o cube_back2.vtk -q
+check "cube .mesh re-read: exit 0" rc_is cube_mesh_back 0
+
+#
+# Exit 1: a problem without solution. The boundary of a 4-triangle fan is
+# fixed in mirrored order, so no position of the free centre orients all
+# triangles like their rest; the result is still written.
+#
+cat > mirror.input << 'EOF'
+5 2
+0 0
+1 0
+1 1
+0 1
+0.5 0.5
+5 2
+0 0
+0 1
+1 1
+1 0
+0.5 0.5
+4 3
+0 1 4
+1 2 4
+2 3 4
+3 0 4
+4
+0 1 2 3
+EOF
+run mirror mirror.input --max-iterations 20 --report mirror.json
+check "unsolvable: exit 1" rc_is mirror 1
+check "unsolvable: result written" test -s mirror-untangled.input
+check "unsolvable: report written" json_parses mirror.json
+check "unsolvable: locally_invertible false" json_is mirror.json locally_invertible false
+check "unsolvable: inverted_after > 0" json_positive mirror.json inverted_after
+check "unsolvable: 20 steps" json_is mirror.json outer_iterations 20
+check "unsolvable: says NOT locally invertible" err_has mirror '^NOT locally invertible'
+check "unsolvable: handles unchanged" [ "$(handle_rows mirror.input)" = "$(handle_rows mirror-untangled.input)" ]
+run mirror_time mirror.input --time-limit 0 -o mirror_time.vtk --report mirror_time.json -q
+check "--time-limit 0: exit 1" rc_is mirror_time 1
+check "--time-limit 0: one step" json_is mirror_time.json outer_iterations 1
+check "--time-limit 0: result written" grep -q '^CELL_TYPES 4' mirror_time.vtk
+
+#
+# Exit 2: bad usage or input. The message names the problem; nothing is
+# written (no output, no report, no temporary file).
+#
+mkdir bad
+cp square.input s4.obj s4.off s4.vtk s4.mesh c3.vtk cube.input bad/
+cd bad || exit 1
+
+# fails NAME REGEX ARGS...: exit 2, stderr matches REGEX, no crash, and the
+# directory is unchanged (a --report is added unless the arguments have one).
+fails() {
+  local name=$1 pattern=$2
+  shift 2
+  local report=(--report "$name.json")
+  local a
+  for a in "$@"; do [ "$a" = --report ] && report=(); done
+  local before
+  before=$(ls -A | LC_ALL=C sort | cksum)
+  "$UNTANGLE" "$@" "${report[@]}" > "../$name.out" 2> "../$name.err"
+  echo $? > "../$name.rc"
+  local after
+  after=$(ls -A | LC_ALL=C sort | cksum)
+  check "$name: exit 2" rc_is "../$name" 2
+  check "$name: message matches '$pattern'" err_has "../$name" "$pattern"
+  check "$name: no crash" no_crash "../$name"
+  check "$name: nothing written" [ "$before" = "$after" ]
+  if ! rc_is "../$name" 2 || ! err_has "../$name" "$pattern"; then
+    sed 's/^/    | /' "../$name.err" >&2
+  fi
+}
+
+# Usage.
+fails no_argument 'INPUT is required'
+fails missing_input 'missing\.input: file not found' missing.input
+fails unknown_extension "s4\\.xyz: unsupported file extension '\\.xyz'" s4.xyz
+fails unknown_output_extension "out\\.ply: unsupported output extension" square.input -o out.ply
+fails unknown_solver 'solver.*foo' square.input --solver foo
+fails theta_too_big 'theta.*2' square.input --theta 2
+fails theta_negative 'theta' square.input --theta -0.5
+fails zero_iterations 'max-iterations' square.input --max-iterations 0
+fails fixed_and_boundary 'fixed.*fix-boundary|fix-boundary.*fixed' square.input --fixed x.txt --fix-boundary
+fails output_dir_missing "nodir/out\\.vtk: directory 'nodir' does not exist" square.input -o nodir/out.vtk
+fails report_dir_missing "nodir/r\\.json: directory 'nodir' does not exist" square.input --report nodir/r.json
+fails report_is_output 'same file' square.input -o r.vtk --report r.vtk
+fails tets_to_obj 'c\.obj: tetrahedra cannot be written as \.obj' cube.input -o c.obj
+fails tets_to_off 'c\.off: tetrahedra cannot be written as \.off' c3.vtk -o c.off
+
+# Input never overwritten.
+sum_before=$(cksum < square.input)
+fails output_is_input 'square\.input: refusing to overwrite the input' square.input -o square.input
+fails output_is_input_other_path 'refusing to overwrite the input' square.input -o ../bad/./square.input
+fails report_is_input 'refusing to overwrite the input' square.input --report square.input
+check "input unchanged after -o/--report INPUT" [ "$(cksum < square.input)" = "$sum_before" ]
+echo "0 1 2" > h.txt
+fails report_is_fixed 'refusing to overwrite the fixed-vertex file' square.input --fixed h.txt --report h.txt
+check "handle file unchanged" [ "$(cat h.txt)" = "0 1 2" ]
+fails output_is_rest 'refusing to overwrite the rest file' s4.off --rest s4.obj -o s4.obj
+
+# --rest and --fixed that do not fit.
+fails rest_vertex_count 's4\.obj: 25 vertices, but square\.input has 1681' square.input --rest s4.obj
+echo "0 1 99999" > out_of_range.txt
+fails fixed_out_of_range 'out_of_range\.txt:1: vertex id 99999 is out of range \[0, 1680\]' square.input --fixed out_of_range.txt
+printf '0 1\nx\n' > not_an_id.txt
+fails fixed_not_an_id 'not_an_id\.txt:2:' square.input --fixed not_an_id.txt
+
+# Du et al. .input
+head -n 20 square.input > trunc.input
+fails input_truncated 'trunc\.input:20: truncated' trunc.input
+sed '5s/.*/nan 0/' square.input > nan.input
+fails input_nan 'nan\.input:5: .*not finite' nan.input
+awk 'NR == 3400 { $2 = 99999 } { print }' OFS='\t' square.input > range.input
+fails input_index_out_of_range 'range\.input:3400: triangle 34: vertex index 99999 is out of range' range.input
+# OBJ
+head -n 40 s4.obj > trunc.obj
+fails obj_truncated_no_vt 'trunc\.obj: no texture coordinates \(vt\)' trunc.obj
+grep -v '^vt' s4.obj | sed 's#/[0-9]*##g' > novt.obj
+fails obj_without_vt 'novt\.obj: no texture coordinates \(vt\)' novt.obj
+fails obj_without_vt_fix_boundary 'novt\.obj: no texture coordinates \(vt\)' novt.obj --fix-boundary
+sed 's/^vt 0.25 0$/vt nan 0/' s4.obj > nan.obj
+fails obj_nan 'nan\.obj:27: .*texture coordinate 2 is not finite' nan.obj
+sed '0,/^f /s/^f [0-9]*/f 999/' s4.obj > range.obj
+fails obj_index_out_of_range 'range\.obj:51: face 1: vertex index 999 is out of range' range.obj
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n' > quad.obj
+fails obj_quad 'quad\.obj:9: face with 4 vertices; only triangles' quad.obj
+# OFF
+head -n 10 s4.off > trunc.off
+fails off_truncated 'trunc\.off:10: truncated' trunc.off
+sed '4s/.*/nan 0 0/' s4.off > nan.off
+fails off_nan 'nan\.off:4: .*vertex 1 is not finite' nan.off
+sed '30s/^3 [0-9]*/3 99/' s4.off > range.off
+fails off_index_out_of_range 'range\.off:30: face 2: vertex index 99 is out of range' range.off
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > quad.off
+fails off_quad 'quad\.off:7: face 0 has 4 vertices; only triangles' quad.off
+sed '5s/.*/0.5 0 0.1/' s4.off > z.off
+fails off_map_not_planar 'z\.off: .*vertex 2 of the map has z = 0\.1' z.off
+# VTK
+head -n 20 s4.vtk > trunc.vtk
+fails vtk_truncated 'trunc\.vtk:20: truncated' trunc.vtk
+sed '8s/.*/nan 0 0/' s4.vtk > nan.vtk
+fails vtk_nan 'nan\.vtk:8: .*point 2 is not finite' nan.vtk
+awk '/^CELLS/ { c = 1; print; next } c == 1 { $2 = 999; c = 0 } { print }' s4.vtk > range.vtk
+fails vtk_index_out_of_range 'range\.vtk:32: cell 0: vertex index 999 is out of range' range.vtk
+cat > mixed.vtk << 'EOF'
+# vtk DataFile Version 2.0
+mixed
+ASCII
+DATASET UNSTRUCTURED_GRID
+POINTS 5 double
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+1 1 1
+CELLS 2 9
+4 0 1 2 3
+3 1 2 4
+CELL_TYPES 2
+10
+5
+EOF
+fails vtk_mixed_cells 'mixed\.vtk:16: mixed cell types' mixed.vtk
+# MEDIT
+head -n 30 s4.mesh > trunc.mesh
+fails mesh_truncated 'trunc\.mesh:30: truncated' trunc.mesh
+sed '8s/.*/0.5 nan 0/' s4.mesh > nan.mesh
+fails mesh_nan 'nan\.mesh:8: .*vertex 2 is not finite' nan.mesh
+awk '/^Triangles/ { c = 1; print; next } c == 1 { c = 2; print; next } c == 2 { $1 = 999; c = 0 } { print }' s4.mesh > range.mesh
+fails mesh_index_out_of_range 'range\.mesh:35: triangle 1: vertex index 999 is out of range' range.mesh
+cd .. || exit 1
+
+#
+# Real data (../shared/data), when present.
+#
+if [ -n "$DATA" ] && [ -d "$DATA/tlc-format" ]; then
+  for case in "cim-planar169 41 48" "tlc-cube64 36 56"; do
+    set -- $case
+    name=$1 inverted=$2 handles=$3
+    file="$DATA/tlc-format/$name.input"
+    if [ ! -f "$file" ]; then
+      echo "SKIPPED: $file is absent"
+      continue
+    fi
+    sum_before=$(cksum < "$file")
+    run "$name" "$file" -o "$name-out.input" --report "$name.json" -q
+    check "$name: exit 0" rc_is "$name" 0
+    check "$name: inverted_before $inverted" json_is "$name.json" inverted_before "$inverted"
+    check "$name: inverted_after 0" json_is "$name.json" inverted_after 0
+    check "$name: fixed_vertices $handles" json_is "$name.json" fixed_vertices "$handles"
+    check "$name: handles unchanged" [ "$(handle_rows "$file")" = "$(handle_rows "$name-out.input")" ]
+    check "$name: data file unchanged" [ "$(cksum < "$file")" = "$sum_before" ]
+  done
+else
+  echo "SKIPPED: real data (no tlc-format/ in '${DATA}')"
+fi
+
+echo "$checks checks, $failures failed"
+[ "$failures" = 0 ] || exit 1
+exit 0
