@@ -308,6 +308,7 @@ std::string short_status(MU::Untangling_status status)
     case MU::Untangling_status::INVERTED_ELEMENTS_LEFT: return "inverted elements left";
     case MU::Untangling_status::COVERINGS_LEFT: return "coverings left";
     case MU::Untangling_status::TIME_LIMIT_REACHED: return "time limit reached";
+    case MU::Untangling_status::STOPPED_BY_CALLBACK: return "stopped by callback";
     case MU::Untangling_status::NUMERICAL_FAILURE: return "numerical failure";
     case MU::Untangling_status::INVALID_INPUT: return "invalid input";
   }

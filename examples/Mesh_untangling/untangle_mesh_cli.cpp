@@ -222,8 +222,9 @@ int run(const Arguments& args)
   options.max_seconds = args.time_limit;
   if(!args.quiet)
     options.progress = [](const MU::Untangling_step& s) {
-      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s\n", s.step,
-                   s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds);
+      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s%s\n", s.step,
+                   s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds,
+                   s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "");
     };
   const MU::Untangling_result result = untangle_mesh_file(mesh, fixed, options);
 

@@ -21,7 +21,6 @@ namespace Mesh_untangling {
 /// \ingroup PkgMeshUntanglingRef
 /// How target sizes relate to the map (`Mesh_untangling::parameters::target_scaling`):
 /// `AUTOMATIC`, `AS_GIVEN` or `MATCH_MAP_VOLUME`.
-using internal::Target_scaling;
 
 namespace internal {
 

@@ -17,6 +17,7 @@ enum class Untangling_status
   INVERTED_ELEMENTS_LEFT,  ///< the iteration budget ran out with inverted elements left
   COVERINGS_LEFT,          ///< no element inverted, but some vertex star or edge fan is wound twice
   TIME_LIMIT_REACHED,      ///< `maximum_running_time` ran out before success
+  STOPPED_BY_CALLBACK,     ///< the callback returned `false` before success
   NUMERICAL_FAILURE,       ///< the energy or its gradient stopped being finite and could not be recovered
   INVALID_INPUT            ///< the input violates a precondition (see `message`)
 };
@@ -30,6 +31,7 @@ inline std::string to_string(Untangling_status status)
     case Untangling_status::INVERTED_ELEMENTS_LEFT: return "inverted elements are left after the iteration budget";
     case Untangling_status::COVERINGS_LEFT: return "no inverted element, but some vertex star or edge fan is covered more than once";
     case Untangling_status::TIME_LIMIT_REACHED: return "the time limit was reached before the map became locally invertible";
+    case Untangling_status::STOPPED_BY_CALLBACK: return "the callback stopped the run before the map became locally invertible";
     case Untangling_status::NUMERICAL_FAILURE: return "the energy stopped being finite and could not be recovered";
     case Untangling_status::INVALID_INPUT: return "invalid input";
   }
@@ -50,7 +52,7 @@ struct Untangling_result
   std::size_t number_of_fixed_vertices = 0;
   std::size_t degenerate_targets_replaced = 0; ///< rest elements too flat to serve, replaced by regular ones
 
-  std::size_t inverted_before = 0;     ///< inverted elements in the input map
+  std::size_t inverted_before = 0;     ///< inverted elements in the input map (input defects excluded)
   std::size_t inverted_after = 0;      ///< inverted elements in the result (input defects excluded)
   std::size_t overwound_vertices_after = 0; ///< vertex stars wound more than once (2D angle, 3D solid angle)
   std::size_t overwound_edges_after = 0;    ///< 3D edge fans wound more than once

@@ -10,6 +10,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <string>
+
 namespace CGAL {
 namespace internal_np {
 enum mesh_untangling_theta_t { mesh_untangling_theta };
@@ -22,6 +24,26 @@ enum mesh_untangling_rest_points_t { mesh_untangling_rest_points };
 } // namespace internal_np
 
 namespace Mesh_untangling {
+
+/// \ingroup PkgMeshUntanglingRef
+/// The inner solver that partially minimizes F(., eps) at each eps step.
+enum class Solver
+{
+  NEWTON,   ///< Newton steps on the positive part of the Hessian, sparse Cholesky (default)
+  LBFGS     ///< L-BFGS with a strong-Wolfe line search: the published reference scheme
+};
+
+inline std::string to_string(Solver s) { return s == Solver::LBFGS ? "lbfgs" : "newton"; }
+
+/// \ingroup PkgMeshUntanglingRef
+/// How target sizes relate to the map.
+enum class Target_scaling
+{
+  AUTOMATIC,          ///< MATCH_MAP_VOLUME when every boundary vertex is fixed or no target is given, else AS_GIVEN
+  AS_GIVEN,           ///< targets are in the units of the map
+  MATCH_MAP_VOLUME    ///< targets scaled so that their total volume is the (signed) volume of the map
+};
+
 namespace parameters {
 
 using Default_named_parameters = CGAL::parameters::Default_named_parameters;

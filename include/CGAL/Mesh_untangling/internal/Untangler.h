@@ -7,6 +7,8 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLER_H
 
 #include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/Untangling_step.h>
+#include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
@@ -20,30 +22,6 @@
 
 namespace CGAL {
 namespace Mesh_untangling {
-
-/// \ingroup PkgMeshUntanglingRef
-/// The inner solver that partially minimizes F(., eps) at each eps step.
-enum class Solver
-{
-  NEWTON,   ///< Newton steps on the positive part of the Hessian, sparse Cholesky (default)
-  LBFGS     ///< L-BFGS with a More-Thuente line search: the published reference scheme
-};
-
-inline std::string to_string(Solver s) { return s == Solver::LBFGS ? "lbfgs" : "newton"; }
-
-/// \ingroup PkgMeshUntanglingRef
-/// What the untangler reports after every eps step (to `callback`).
-struct Untangling_step
-{
-  std::size_t step = 0;
-  double epsilon = 0;
-  double energy = 0;
-  double min_det = 0;              ///< smallest det J (floating point), targets scaled to the map
-  std::size_t non_positive = 0;    ///< elements with det J <= 0 (floating point)
-  std::size_t inner_iterations = 0;
-  std::size_t energy_evaluations = 0;
-  double seconds = 0;
-};
 
 namespace internal {
 
@@ -92,13 +70,105 @@ void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
   if(positive > 0) { r.mean_shape_distortion /= positive; r.mean_volume_distortion /= positive; }
 }
 
+/// Where one run of the eps loop ended.
+struct Eps_loop_outcome
+{
+  bool settled = false;            // every element positive, energy settled
+  bool stalled = false;            // the number of inverted elements stopped going down
+  bool numerical_failure = false;
+  bool stopped = false;            // by the callback or the clock
+  double energy = 0, epsilon = 0;
+};
+
+/// The eps loop of the published scheme, shared by the stages below.
+template <int d>
+class Eps_loop
+{
+public:
+  Eps_loop(const Untangling_options& options, double theta, Untangling_result& result)
+    : options_(options), theta_(theta), result_(result), start_(std::chrono::steady_clock::now()) {}
+
+  double seconds() const
+  { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  bool out_of_time() const { return seconds() > options_.max_seconds; }
+
+  /// Partial minimizations of F(., eps) from P.x until the energy settles
+  /// with every element positive.  With `stall_steps` > 0, also gives up when
+  /// the count of non-positive elements has not gone down for that many steps.
+  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, std::size_t stall_steps = 0)
+  {
+    Eps_loop_outcome out;
+    std::unique_ptr<Newton_solver<d>> newton;
+    if(options_.solver == Solver::NEWTON) newton = std::make_unique<Newton_solver<d>>(P);
+    const int max_inner = options_.max_inner_iterations >= 0 ? options_.max_inner_iterations
+                          : (options_.solver == Solver::NEWTON ? 3 : 10000);
+    auto summary = determinant_summary(P, P.x.data());
+    double eps = initial_epsilon(summary.min_det);
+    std::size_t best = summary.non_positive, since_best = 0;
+    while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
+      const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
+      const std::vector<double> previous = P.x;
+      const Inner_statistics inner = newton ? newton->minimize(P, eps, theta_, max_inner)
+                                            : LBFGS_solver<d>().minimize(P, eps, theta_, max_inner);
+      const double E = energy<d>(P, P.x.data(), eps, theta_);
+      result_.energy_evaluations += inner.evaluations + 2;
+      result_.inner_iterations += inner.iterations;
+      ++result_.outer_iterations;
+      if(!std::isfinite(E)) { P.x = previous; out.numerical_failure = true; break; }
+      summary = determinant_summary(P, P.x.data());
+      out.energy = E;
+      out.epsilon = eps;
+
+      const Untangling_step info{steps_++, eps, E, summary.min_det, summary.non_positive,
+                                 inner.iterations, inner.evaluations, seconds(), stage};
+      if(options_.callback && !options_.callback(info)) { out.stopped = true; break; }
+      if(energy_settled(E, E_prev, summary.min_det)) { out.settled = true; break; }
+      if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
+      else if(stall_steps > 0 && summary.non_positive > 0 && ++since_best >= stall_steps) { out.stalled = true; break; }
+      eps = next_epsilon(eps, E, E_prev, summary.min_det);
+      if(out_of_time()) { out.stopped = true; break; }
+    }
+    return out;
+  }
+
+private:
+  const Untangling_options& options_;
+  const double theta_;
+  Untangling_result& result_;
+  const std::chrono::steady_clock::time_point start_;
+  std::size_t steps_ = 0;
+};
+
+/// The same problem with a regular target of the same orientation for
+/// every element: well conditioned, so it untangles where badly shaped
+/// targets trap the map.
+template <int d>
+Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const Untangling_problem<d>& P)
+{
+  Untangling_input<d> regular;
+  regular.positions = in.positions;
+  regular.elements = in.elements;
+  regular.is_fixed = in.is_fixed;
+  for(std::size_t k = 0; k < in.elements.size(); ++k) {
+    auto t = regular_simplex<d>();
+    if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
+    regular.targets.push_back(t);
+  }
+  Untangling_problem<d> R = make_untangling_problem<d>(regular, Target_scaling::MATCH_MAP_VOLUME);
+  R.x = P.x;    // same positions, same normalization
+  return R;
+}
+
 /// Untangles `in.positions` in place (free vertices only: fixed ones are
 /// never written, so they keep their coordinates bit for bit).
+///
+/// Stage 0 runs the published scheme with the given targets.  When it stalls
+/// (badly shaped targets can hold a few elements inverted forever), stage 1
+/// untangles toward regular targets from where stage 0 stopped, and stage 2
+/// goes back to the given targets from that valid map, keeping it valid.
 template <int d>
 Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options)
 {
-  const auto start = std::chrono::steady_clock::now();
-  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   Untangling_result result;
   result.solver = to_string(options.solver);
   result.number_of_vertices = in.positions.size();
@@ -114,41 +184,29 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   }
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
+  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
+  const Invertibility_report before =
+    check_local_invertibility<d>(as_arrays<d>(in.positions), in.elements, P.reference_orientation, is_fixed);
+  result.inverted_before = before.inverted_elements;
+  result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
+
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
-  std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  result.inverted_before = number_of_inverted_elements<d>(as_arrays<d>(in.positions), in.elements, P.reference_orientation);
-
-  auto summary = determinant_summary(P, P.x.data());
-  result.min_scaled_det_before = summary.min_det;
-  double eps = initial_epsilon(summary.min_det);
-  std::unique_ptr<Newton_solver<d>> newton;
-  if(options.solver == Solver::NEWTON) newton = std::make_unique<Newton_solver<d>>(P);
-  const int max_inner = options.max_inner_iterations >= 0 ? options.max_inner_iterations
-                        : (options.solver == Solver::NEWTON ? 50 : 10000);
-
-  bool numerical_failure = false, stopped = false;
-  double E = energy<d>(P, P.x.data(), eps, theta);
-  for(std::size_t step = 0; step < options.max_outer_iterations && !P.elements.empty(); ++step) {
-    const double E_prev = energy<d>(P, P.x.data(), eps, theta);
-    const std::vector<double> previous = P.x;
-    const Inner_statistics inner = newton ? newton->minimize(P, eps, theta, max_inner)
-                                          : LBFGS_solver<d>().minimize(P, eps, theta, max_inner);
-    E = energy<d>(P, P.x.data(), eps, theta);
-    result.energy_evaluations += inner.evaluations + 2;
-    result.inner_iterations += inner.iterations;
-    ++result.outer_iterations;
-    if(!std::isfinite(E)) { P.x = previous; numerical_failure = true; break; }
-    summary = determinant_summary(P, P.x.data());
-
-    Untangling_step info{step, eps, E, summary.min_det, summary.non_positive,
-                         inner.iterations, inner.evaluations, seconds()};
-    if(options.callback && !options.callback(info)) { stopped = true; break; }
-    if(energy_settled(E, E_prev, summary.min_det)) break;
-    eps = next_epsilon(eps, E, E_prev, summary.min_det);
-    if(seconds() > options.max_seconds) { stopped = true; break; }
+  Eps_loop<d> loop(options, theta, result);
+  const bool targets_given = !in.targets.empty();
+  Eps_loop_outcome outcome = loop.run(P, 0, targets_given ? 40 : 0);
+  if(outcome.stalled) {
+    Untangling_problem<d> R = with_regular_targets(in, P);
+    outcome = loop.run(R, 1);
+    const auto untangled = determinant_summary(R, R.x.data());
+    P.x = R.x;
+    if(untangled.non_positive == 0 && !outcome.stopped && !loop.out_of_time()) {
+      outcome = loop.run(P, 2);
+      if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
+    }
   }
-  result.final_energy = E;
-  result.final_epsilon = eps;
+  const auto summary = determinant_summary(P, P.x.data());
+  result.final_energy = outcome.energy;
+  result.final_epsilon = outcome.epsilon;
   result.min_scaled_det_after = summary.min_det;
   measure_quality(P, result);
 
@@ -162,11 +220,12 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   result.overwound_vertices_after = report.overwound_interior_vertices + report.overwound_boundary_vertices;
   result.overwound_edges_after = report.overwound_interior_edges + report.overwound_boundary_edges;
   result.input_defects = report.input_defects;
-  result.seconds = seconds();
+  result.seconds = loop.seconds();
 
   if(report.is_locally_invertible()) result.status = Untangling_status::SUCCESS;
-  else if(numerical_failure) result.status = Untangling_status::NUMERICAL_FAILURE;
-  else if(stopped && seconds() > options.max_seconds) result.status = Untangling_status::TIME_LIMIT_REACHED;
+  else if(outcome.numerical_failure) result.status = Untangling_status::NUMERICAL_FAILURE;
+  else if(outcome.stopped && loop.out_of_time()) result.status = Untangling_status::TIME_LIMIT_REACHED;
+  else if(outcome.stopped) result.status = Untangling_status::STOPPED_BY_CALLBACK;
   else if(report.inverted_elements > 0) result.status = Untangling_status::INVERTED_ELEMENTS_LEFT;
   else result.status = Untangling_status::COVERINGS_LEFT;
   return result;

@@ -3,6 +3,8 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
 
+#include <CGAL/Mesh_untangling/parameters.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -34,13 +36,6 @@ struct Untangling_input
   std::vector<bool> is_fixed;           // empty: all free
 };
 
-/// How target sizes relate to the map.
-enum class Target_scaling
-{
-  AUTOMATIC,            // match the map's volume when the boundary is fixed or no target is given
-  AS_GIVEN,             // targets are in the units of the map
-  MATCH_MAP_VOLUME      // total target volume = (signed) volume of the map
-};
 
 /// Flat arrays the solvers work on.  Coordinates are normalized (centred,
 /// unit bounding box) so that tolerances are scale free; elements whose

@@ -1,0 +1,29 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_UNTANGLING_UNTANGLING_STEP_H
+#define CGAL_MESH_UNTANGLING_UNTANGLING_STEP_H
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Mesh_untangling {
+
+/// \ingroup PkgMeshUntanglingRef
+/// What the untangler reports after every eps step (to the `callback` named parameter).
+struct Untangling_step
+{
+  std::size_t step = 0;
+  double epsilon = 0;
+  double energy = 0;
+  double min_det = 0;              ///< smallest det J (floating point), targets scaled to the map
+  std::size_t non_positive = 0;    ///< elements with det J <= 0 (floating point)
+  std::size_t inner_iterations = 0;
+  std::size_t energy_evaluations = 0;
+  double seconds = 0;
+  int stage = 0;                   ///< 0: given targets; 1: regular targets (fallback); 2: given targets again, from a valid map
+};
+
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif
