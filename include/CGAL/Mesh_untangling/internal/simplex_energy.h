@@ -40,6 +40,7 @@ struct Simplex_energy
 {
   using Jacobian = Eigen::Matrix<double, d, d>;
   using Hessian = Eigen::Matrix<double, d * d, d * d>;
+  using Flat = Eigen::Matrix<double, d * d, 1>;   // J flattened column by column
 
   double theta;   // weight of the size term
   double eps;     // regularization
@@ -57,37 +58,122 @@ struct Simplex_energy
   double value_and_gradient(const Jacobian& J, Jacobian& gradient, Hessian* hessian = nullptr,
                             bool project = true) const
   {
+    const Partials A = partials(J, hessian != nullptr);
+    gradient = 2 * A.s * J + A.D * A.C;
+    if(hessian != nullptr)
+      *hessian = project ? projected_hessian(J, A) : unprojected_hessian(J, A);
+    return A.f;
+  }
+
+  /// f = A(s, D) with s = |J|_F^2 and D = det J, and the partial derivatives
+  /// of A its derivatives need (A_ss = 0): everything about f is isotropic.
+  struct Partials
+  {
+    double f, det;
+    double s, D, sD, DD;   // A_s, A_D, A_sD, A_DD (A_DD only when asked for)
+    Jacobian C;            // cofactor matrix, dD/dJ
+  };
+
+  Partials partials(const Jacobian& J, bool second_order) const
+  {
+    Partials A;
     const double D = J.determinant();
-    const Jacobian C = cofactor(J);     // dD/dJ
+    A.det = D;
+    A.C = cofactor(J);
     const Regularized_determinant chi(D, eps);
     const double s = J.squaredNorm();
     const double a = chi.value, a1 = chi.first, a2 = chi.second;
     const double p = 2. / d;
     const double ap = std::pow(a, -p);  // chi^(-2/d)
 
-    // f = A(s, D) = shape(s, D) + size(D); partial derivatives of A:
+    // f = A(s, D) = shape(s, D) + size(D)
     const double shape_weight = (1 - theta) / d;
-    const double A_s = shape_weight * ap;
-    const double A_sD = -shape_weight * p * ap / a * a1;
+    A.s = shape_weight * ap;
+    A.sD = -shape_weight * p * ap / a * a1;
     const double size_D = theta * (D / a - (1 + D * D) * a1 / (2 * a * a));
-    const double A_D = s * A_sD + size_D;
-    const double f = shape_weight * s * ap + theta * (1 + D * D) / (2 * a);
+    A.D = s * A.sD + size_D;
+    A.f = shape_weight * s * ap + theta * (1 + D * D) / (2 * a);
+    A.DD = 0;
+    if(second_order) {
+      const double size_DD = theta * (1 / a - 2 * D * a1 / (a * a) - (1 + D * D) * a2 / (2 * a * a)
+                                      + (1 + D * D) * a1 * a1 / (a * a * a));
+      A.DD = shape_weight * s * (p * (p + 1) * ap / (a * a) * a1 * a1 - p * ap / a * a2) + size_DD;
+    }
+    return A;
+  }
 
-    gradient = 2 * A_s * J + A_D * C;
-    if(hessian == nullptr)
-      return f;
+  /// d2F/dJ2 = 2 A_s I + 2 A_sD (j c^T + c j^T) + A_DD c c^T + A_D d2D/dJ2 (j = vec J, c = vec C).
+  static Hessian unprojected_hessian(const Jacobian& J, const Partials& A)
+  {
+    const Eigen::Map<const Flat> j(J.data()), c(A.C.data());
+    Hessian H = 2 * A.s * Hessian::Identity();
+    H += 2 * A.sD * (j * c.transpose() + c * j.transpose());
+    H += A.DD * c * c.transpose();
+    H += A.D * determinant_hessian(J);
+    return H;
+  }
 
-    const double size_DD = theta * (1 / a - 2 * D * a1 / (a * a) - (1 + D * D) * a2 / (2 * a * a)
-                                    + (1 + D * D) * a1 * a1 / (a * a * a));
-    const double A_DD = shape_weight * s * (p * (p + 1) * ap / (a * a) * a1 * a1 - p * ap / a * a2) + size_DD;
+  /// The eigen-system of d2F/dJ2 in closed form (Smith, De Goes, Kim,
+  /// "Analytic eigensystems for isotropic distortion energies", TOG 2019).
+  ///
+  /// Write J = U S V^T with rotations U, V (det = +1) and S = diag(sigma),
+  /// the last sigma carrying the sign of det J.  dJ = U dM V^T is an
+  /// orthogonal change of variables, det(U M V^T) = det M and
+  /// cof(J) = U cof(S) V^T, so in M the Hessian is that of A(|M|^2, det M) at
+  /// M = S.  There d2(det)/dM2 only couples M_ii with M_jj (by sigma_k, k the
+  /// third index; 1 in 2D) and M_ij with M_ji (by -sigma_k), hence:
+  ///  - for every i < j, the "flip" dM = (E_ij + E_ji)/sqrt2 with eigenvalue
+  ///    2 A_s - A_D sigma_k and the "twist" (E_ij - E_ji)/sqrt2 with 2 A_s + A_D sigma_k;
+  ///  - the d "scaling" modes dM = diag(w), w the eigenvectors of the d x d
+  ///    matrix  2 A_s I + 2 A_sD (sigma c^T + c sigma^T) + A_DD c c^T + A_D Q,
+  ///    c_i = dD/dsigma_i (product of the other sigmas), Q_ij = sigma_k for i != j.
+  /// Calls `mode(lambda, E)` for each eigenpair, E = U dM V^T (unit norm).
+  template <class Mode>
+  static void for_each_eigenpair(const Jacobian& J, const Partials& A, Mode&& mode)
+  {
+    Eigen::JacobiSVD<Jacobian, Eigen::NoQRPreconditioner> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Jacobian U = svd.matrixU(), V = svd.matrixV();
+    Eigen::Matrix<double, d, 1> sigma = svd.singularValues();
+    if(U.determinant() < 0) { U.col(d - 1) *= -1; sigma(d - 1) *= -1; }
+    if(V.determinant() < 0) { V.col(d - 1) *= -1; sigma(d - 1) *= -1; }
 
-    const Eigen::Map<const Eigen::Matrix<double, d * d, 1>> j(J.data()), c(C.data());
-    Hessian H = 2 * A_s * Hessian::Identity();
-    H += 2 * A_sD * (j * c.transpose() + c * j.transpose());
-    H += A_DD * c * c.transpose();
-    H += A_D * determinant_hessian(J);
-    *hessian = project ? positive_part(H) : H;
-    return f;
+    Eigen::Matrix<double, d, 1> c;   // dD/dsigma
+    Eigen::Matrix<double, d, d> S;   // the scaling block
+    if constexpr(d == 2) {
+      c << sigma(1), sigma(0);
+    } else {
+      c << sigma(1) * sigma(2), sigma(0) * sigma(2), sigma(0) * sigma(1);
+    }
+    // sigma_k for the pair i != j (k the third index in 3D; 1 in 2D)
+    auto other = [&sigma](int i, int j) { return d == 2 ? 1. : sigma(3 - i - j); };
+    for(int i = 0; i < d; ++i)
+      for(int j = 0; j < d; ++j)
+        S(i, j) = 2 * A.sD * (sigma(i) * c(j) + c(i) * sigma(j)) + A.DD * c(i) * c(j)
+                + (i == j ? 2 * A.s : A.D * other(i, j));
+
+    const double r = std::sqrt(0.5);
+    for(int i = 0; i < d; ++i)
+      for(int j = i + 1; j < d; ++j) {
+        const Jacobian a = U.col(i) * V.col(j).transpose(), b = U.col(j) * V.col(i).transpose();
+        mode(2 * A.s - A.D * other(i, j), Jacobian(r * (a + b)));   // flip
+        mode(2 * A.s + A.D * other(i, j), Jacobian(r * (a - b)));   // twist
+      }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, d, d>> scaling(S);
+    for(int m = 0; m < d; ++m)
+      mode(scaling.eigenvalues()(m), Jacobian(U * scaling.eigenvectors().col(m).asDiagonal() * V.transpose()));
+  }
+
+  /// d2F/dJ2 with its negative eigenvalues set to zero, from the closed-form
+  /// eigen-system: H minus its negative modes (usually few, often none).
+  static Hessian projected_hessian(const Jacobian& J, const Partials& A)
+  {
+    Hessian H = unprojected_hessian(J, A);
+    for_each_eigenpair(J, A, [&H](double lambda, const Jacobian& E) {
+      if(lambda >= 0) return;
+      const Eigen::Map<const Flat> e(E.data());
+      H.noalias() -= (lambda * e) * e.transpose();
+    });
+    return H;
   }
 
   static Jacobian cofactor(const Jacobian& J)
@@ -132,7 +218,8 @@ struct Simplex_energy
     return H;
   }
 
-  /// Symmetric matrix with its negative eigenvalues set to zero.
+  /// Symmetric matrix with its negative eigenvalues set to zero, numerically
+  /// (a 9 x 9 eigen-solver in 3D: the reference `projected_hessian` is tested against).
   static Hessian positive_part(const Hessian& H)
   {
     Eigen::SelfAdjointEigenSolver<Hessian> eigen(H);
