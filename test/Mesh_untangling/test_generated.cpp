@@ -7,6 +7,9 @@
 
 #include "test_common.h"
 
+#include <CGAL/Mesh_untangling/Untangling_step.h>
+#include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
+
 using namespace Mesh_untangling_tools;
 
 void run(const std::string& name, Mesh_file mesh, const std::string& solver)
@@ -33,8 +36,49 @@ void run(const std::string& name, Mesh_file mesh, const std::string& solver)
   CHECK_MESSAGE(moved_fixed == 0, name << ": " << moved_fixed << " fixed vertices moved");
 }
 
+/// The eps sequence of a real run follows the published rule step by step.
+void check_epsilon_sequence()
+{
+  Mesh_file mesh = make_square_grid(16);
+  perturb_interior(mesh, 16, 2.0, 4);
+  std::vector<bool> fixed(mesh.map.size(), false);
+  for(std::size_t v : mesh.fixed) fixed[v] = true;
+  std::vector<CGAL::Mesh_untangling::Untangling_step> steps;
+  Run_options options;
+  options.solver = "lbfgs";
+  options.progress = [&](const CGAL::Mesh_untangling::Untangling_step& s) { steps.push_back(s); };
+  const auto result = untangle_mesh_file(mesh, fixed, options);
+  CHECK(steps.size() >= 2);
+  CHECK(steps.front().epsilon == CGAL::Mesh_untangling::internal::initial_epsilon(result.min_scaled_det_before));
+  for(std::size_t k = 0; k + 1 < steps.size(); ++k) {
+    const auto& s = steps[k];
+    if(steps[k + 1].stage != s.stage) continue;   // a new stage starts its own sequence
+    const double expected = CGAL::Mesh_untangling::internal::next_epsilon(s.epsilon, s.energy, s.energy_before, s.min_det);
+    CHECK_MESSAGE(steps[k + 1].epsilon == expected, "step " << k + 1 << ": eps " << steps[k + 1].epsilon << ", rule gives " << expected);
+  }
+  CHECK(CGAL::Mesh_untangling::internal::energy_settled(steps.back().energy, steps.back().energy_before, steps.back().min_det));
+}
+
+/// Coordinates far from 1 (tiny, huge, far from the origin) untangle alike:
+/// the untangler normalizes internally and undoes it on output.
+void check_scaling()
+{
+  for(const double scale : {1e-9, 1e9}) {
+    Mesh_file mesh = make_square_grid(12);
+    perturb_interior(mesh, 12, 2.0, 5);
+    for(auto& p : mesh.map) { p[0] = p[0] * scale + 1e6 * scale; p[1] = p[1] * scale - 3e6 * scale; }
+    std::vector<bool> fixed(mesh.map.size(), false);
+    for(std::size_t v : mesh.fixed) fixed[v] = true;
+    const auto result = untangle_mesh_file(mesh, fixed, Run_options());
+    CHECK_MESSAGE(result.is_locally_invertible(), "scale " << scale << ": " << CGAL::Mesh_untangling::to_string(result.status));
+    CHECK(check_mesh_file(mesh, fixed).inverted == 0);
+  }
+}
+
 int main()
 {
+  check_epsilon_sequence();
+  check_scaling();
   for(const std::string solver : {"newton", "lbfgs"}) {
     Mesh_file square = make_square_grid(24);
     perturb_interior(square, 24, 2.0, 1);

@@ -22,8 +22,8 @@ Eigen::Matrix<double, d, d> random_rotation(std::mt19937& random)
   return Q;
 }
 
-/// A Jacobian of one of several kinds (generic, prescribed singular values
-/// with repeats, zeros, tiny or negative ones), scaled by `scale`.
+/// A Jacobian of one of several kinds: generic, or with prescribed singular
+/// values (repeated, zero, tiny, negative).
 template <int d>
 Eigen::Matrix<double, d, d> random_jacobian(std::mt19937& random, int kind)
 {
@@ -41,8 +41,8 @@ Eigen::Matrix<double, d, d> random_jacobian(std::mt19937& random, int kind)
     case 1: sigma.setConstant(sigma(0)); break;                   // all equal
     case 2: sigma(1) = sigma(0); break;                           // a repeated pair
     case 3: sigma(d - 1) = 0; break;                              // singular
-    case 4: sigma(d - 1) = std::pow(10., -4 - int(kind / 8) % 10); break;   // nearly singular
-    case 5: sigma(d - 1) = -std::pow(10., -4 - int(kind / 8) % 10); break;  // nearly singular, inverted
+    case 4: sigma(d - 1) = std::pow(10., -4 - (kind / 8) % 10); break;   // nearly singular
+    case 5: sigma(d - 1) = -std::pow(10., -4 - (kind / 8) % 10); break;  // nearly singular, inverted
     case 6: sigma.setConstant(sigma(0)); sigma(d - 1) *= -1; break;          // inverted, equal magnitudes
     default: sigma(d - 1) *= -1; if(d == 3) sigma(1) = sigma(0); break;      // inverted with a repeat
   }
@@ -60,9 +60,11 @@ void check_projection(std::mt19937& random, int trials)
   const double scales[] = {1e-3, 1., 1e3};
   double worst = 0, worst_eigenpair = 0;
   int projected = 0;
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
   for(int trial = 0; trial < trials; ++trial) {
-    const Jacobian J = scales[trial % 3] * random_jacobian<d>(random, trial);
-    const Energy f{thetas[(trial / 3) % 4], epsilons[(trial / 12) % 5] * std::pow(scales[trial % 3], d)};
+    const double scale = scales[pick(random) % 3];
+    const Jacobian J = scale * random_jacobian<d>(random, pick(random));
+    const Energy f{thetas[pick(random) % 4], epsilons[pick(random) % 5] * std::pow(scale, d)};
     Jacobian G, G_ref;
     Hessian H, H_psd;
     const double value = f.value_and_gradient(J, G, &H_psd);

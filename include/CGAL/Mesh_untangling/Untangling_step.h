@@ -14,7 +14,8 @@ struct Untangling_step
 {
   std::size_t step = 0;
   double epsilon = 0;
-  double energy = 0;
+  double energy_before = 0;        ///< F(X, eps) at the start of the step (eps of this step)
+  double energy = 0;               ///< F(X, eps) after the partial minimization
   double min_det = 0;              ///< smallest det J (floating point), targets scaled to the map
   std::size_t non_positive = 0;    ///< elements with det J <= 0 (floating point)
   std::size_t inner_iterations = 0;

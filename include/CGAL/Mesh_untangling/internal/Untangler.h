@@ -119,7 +119,7 @@ public:
       out.energy = E;
       out.epsilon = eps;
 
-      const Untangling_step info{steps_++, eps, E, summary.min_det, summary.non_positive,
+      const Untangling_step info{steps_++, eps, E_prev, E, summary.min_det, summary.non_positive,
                                  inner.iterations, inner.evaluations, seconds(), stage};
       if(options_.callback && !options_.callback(info)) { out.stopped = true; break; }
       if(energy_settled(E, E_prev, summary.min_det)) { out.settled = true; break; }
