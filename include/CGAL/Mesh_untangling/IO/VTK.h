@@ -49,16 +49,19 @@ inline bool is_VTK_section(std::string_view word)
 
 // A section keyword where a number should be means the previous block has
 // fewer entries than its count announced: say so instead of "not a number".
-inline Token next_VTK_value(Text_file& file, const std::string& block, std::size_t done, std::size_t count,
-                            const std::string& items)
+inline Token next_VTK_value(Text_file& file, const char* block, std::size_t done, std::size_t count,
+                            const char* items)
 {
+  // The message is built only on failure: this runs once per number of the file.
+  auto status = [&] {
+    return std::string("the ") + block + " block ends after " + std::to_string(done) + " of " + std::to_string(count)
+           + " " + items;
+  };
   Token token;
-  const std::string status = "the " + block + " block ends after " + std::to_string(done) + " of "
-                             + std::to_string(count) + " " + items;
   if(!file.next_token(token))
-    file.fail_truncated(status);
+    file.fail_truncated(status());
   if(is_VTK_section(token.text))
-    file.fail(token.line, "truncated: " + status + " (found " + quote_token(token.text) + ")");
+    file.fail(token.line, "truncated: " + status() + " (found " + quote_token(token.text) + ")");
   return token;
 }
 
