@@ -33,7 +33,7 @@ struct Arguments
   std::string input, rest, fixed, output, report, solver = "newton";
   bool fix_boundary = false, quiet = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
-  std::size_t max_iterations = 1000;
+  std::size_t max_iterations = MU::default_number_of_iterations;
 };
 
 /// Bad usage or input: reported, nothing written, exit code 2.

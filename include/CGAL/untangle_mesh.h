@@ -34,7 +34,7 @@ Untangling_options read_options(const NamedParameters& np)
   o.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta), -1.);
   o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::NEWTON);
   o.scaling = choose_parameter(get_parameter(np, internal_np::mesh_untangling_target_scaling), Target_scaling::AUTOMATIC);
-  o.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(1000));
+  o.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), Mesh_untangling::default_number_of_iterations);
   o.max_seconds = choose_parameter(get_parameter(np, internal_np::maximum_running_time),
                                    std::numeric_limits<double>::infinity());
   o.callback = choose_parameter(get_parameter(np, internal_np::callback),
@@ -73,7 +73,7 @@ struct Is_named_parameters<Named_function_parameters<T, Tag, Base>> : std::true_
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the largest number of eps steps}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{1000}
+///     \cgalParamDefault{`Mesh_untangling::default_number_of_iterations` (5000)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
 ///     \cgalParamDescription{seconds after which the run stops at the end of the current eps step}

@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/parameters.h>
 
 #include <functional>
 #include <limits>
@@ -27,7 +28,7 @@ struct Run_options
 {
   std::string solver = "newton";       // "newton" or "lbfgs"
   double theta = -1;                   // < 0: the dimension's default
-  std::size_t max_iterations = 1000;   // eps steps
+  std::size_t max_iterations = CGAL::Mesh_untangling::default_number_of_iterations;   // eps steps
   double max_seconds = std::numeric_limits<double>::infinity();
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
 };

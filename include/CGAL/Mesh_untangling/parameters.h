@@ -10,6 +10,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
 #include <string>
 
 namespace CGAL {
@@ -43,6 +44,10 @@ enum class Target_scaling
   AS_GIVEN,           ///< targets are in the units of the map
   MATCH_MAP_VOLUME    ///< targets scaled so that their total volume is the (signed) volume of the map
 };
+
+/// \ingroup PkgMeshUntanglingRef
+/// Default largest number of eps steps (`number_of_iterations`), all stages together.
+constexpr std::size_t default_number_of_iterations = 5000;
 
 namespace parameters {
 

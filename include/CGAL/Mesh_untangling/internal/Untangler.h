@@ -15,7 +15,9 @@
 #include <CGAL/Mesh_untangling/internal/Newton_solver.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 
+#include <algorithm>
 #include <chrono>
+#include <random>
 #include <functional>
 #include <limits>
 #include <string>
@@ -29,12 +31,15 @@ struct Untangling_options
 {
   double theta = -1;                 // < 0: 1/128 in 2D, 1/2 in 3D
   Solver solver = Solver::NEWTON;
-  std::size_t max_outer_iterations = 1000;
+  std::size_t max_outer_iterations = default_number_of_iterations;
   int max_inner_iterations = -1;     // < 0: solver default
   double max_seconds = std::numeric_limits<double>::infinity();
   Target_scaling scaling = Target_scaling::AUTOMATIC;
   std::function<bool(const Untangling_step&)> callback;   // false stops the run
 };
+
+constexpr std::size_t stall_steps = 40;   // eps steps without fewer non-positive elements
+constexpr int max_restarts = 10;           // shakes in stage 1
 
 template <int d>
 double default_theta() { return d == 2 ? 1. / 128 : 1. / 2; }
@@ -93,9 +98,9 @@ public:
   bool out_of_time() const { return seconds() > options_.max_seconds; }
 
   /// Partial minimizations of F(., eps) from P.x until the energy settles
-  /// with every element positive.  With `stall_steps` > 0, also gives up when
+  /// with every element positive.  With `patience` > 0, also gives up when
   /// the count of non-positive elements has not gone down for that many steps.
-  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, std::size_t stall_steps = 0)
+  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, std::size_t patience = 0)
   {
     Eps_loop_outcome out;
     std::unique_ptr<Newton_solver<d>> newton;
@@ -124,8 +129,10 @@ public:
       if(options_.callback && !options_.callback(info)) { out.stopped = true; break; }
       if(energy_settled(E, E_prev, summary.min_det)) { out.settled = true; break; }
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
-      else if(stall_steps > 0 && summary.non_positive > 0 && ++since_best >= stall_steps) { out.stalled = true; break; }
-      eps = next_epsilon(eps, E, E_prev, summary.min_det);
+      else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }
+      // Below tiny_epsilon the energy of a flat element overflows long before
+      // it helps: the floor keeps the problem numerically solvable.
+      eps = std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon);
       if(out_of_time()) { out.stopped = true; break; }
     }
     return out;
@@ -159,13 +166,35 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   return R;
 }
 
+/// Moves the free vertices of every non-positive element at random by up to
+/// a fifth of the element's longest edge (deterministic for a given `random`).
+template <int d>
+void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  std::vector<double> reach(P.number_of_vertices, 0.);
+  for(std::size_t k = 0; k < P.elements.size(); ++k) {
+    if(jacobian(P, P.x.data(), k).determinant() > 0) continue;
+    double longest = 0;
+    for(int i = 0; i <= d; ++i)
+      for(int j = i + 1; j <= d; ++j)
+        longest = std::max(longest, (P.point(P.elements[k][i]) - P.point(P.elements[k][j])).norm());
+    for(std::size_t v : P.elements[k]) reach[v] = std::max(reach[v], longest / 5);
+  }
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(reach[v] > 0 && !P.is_fixed[v])
+      for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
+}
+
 /// Untangles `in.positions` in place (free vertices only: fixed ones are
 /// never written, so they keep their coordinates bit for bit).
 ///
 /// Stage 0 runs the published scheme with the given targets.  When it stalls
 /// (badly shaped targets can hold a few elements inverted forever), stage 1
-/// untangles toward regular targets from where stage 0 stopped, and stage 2
-/// goes back to the given targets from that valid map, keeping it valid.
+/// untangles toward regular targets from where stage 0 stopped, shaking the
+/// vertices of the elements it cannot untangle when it stalls in turn (a few
+/// times at most); stage 2 goes back to the given targets from that valid map,
+/// keeping it valid.
 template <int d>
 Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options)
 {
@@ -193,13 +222,21 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
   const bool targets_given = !in.targets.empty();
-  Eps_loop_outcome outcome = loop.run(P, 0, targets_given ? 40 : 0);
+  Eps_loop_outcome outcome = loop.run(P, 0, stall_steps);
   if(outcome.stalled) {
-    Untangling_problem<d> R = with_regular_targets(in, P);
-    outcome = loop.run(R, 1);
-    const auto untangled = determinant_summary(R, R.x.data());
+    Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
+    if(targets_given) outcome = loop.run(R, 1, stall_steps);
+    // Still stuck: typically free vertices collapsed onto each other, a
+    // symmetric configuration the gradient cannot break.  Shake the vertices
+    // of the non-positive elements and go on.
+    std::mt19937 random(1);
+    for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
+      shake_non_positive_elements(R, random);
+      outcome = loop.run(R, 1, stall_steps);
+    }
+    const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
     P.x = R.x;
-    if(untangled.non_positive == 0 && !outcome.stopped && !loop.out_of_time()) {
+    if(targets_given && untangled && !outcome.stopped && !loop.out_of_time()) {
       outcome = loop.run(P, 2);
       if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
     }
