@@ -1,12 +1,20 @@
 // The closed-form positive part of the Hessian of one simplex energy against
 // the numerical one (a dense eigen-solver) on thousands of Jacobians: positive,
 // negative, near-zero and zero determinants, repeated singular values, small
-// and large eps and theta.
+// and large eps and theta.  Then the Newton solver's assembly (element
+// Hessians in vertex coordinates, lower triangle, coloured parallel loops)
+// against a plain sum of K^T P K, and its bits with 1 and 2 threads.
+#include <CGAL/Mesh_untangling/internal/Newton_solver.h>
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
 
 #include "test_common.h"
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
+#include <limits>
 #include <random>
 
 using namespace CGAL::Mesh_untangling::internal;
@@ -58,20 +66,32 @@ void check_projection(std::mt19937& random, int trials)
   const double thetas[] = {0., 1. / 128, 0.5, 1.};
   const double epsilons[] = {1e-9, 1e-5, 1e-2, 1., 10.};
   const double scales[] = {1e-3, 1., 1e3};
-  double worst = 0, worst_eigenpair = 0;
+  double worst = 0, worst_eigenpair = 0, worst_vertex = 0;
+  std::normal_distribution<double> normal;
   int projected = 0;
   std::uniform_int_distribution<int> pick(0, 1 << 20);
   for(int trial = 0; trial < trials; ++trial) {
     const double scale = scales[pick(random) % 3];
     const Jacobian J = scale * random_jacobian<d>(random, pick(random));
     const Energy f{thetas[pick(random) % 4], epsilons[pick(random) % 5] * std::pow(scale, d)};
-    Jacobian G, G_ref;
+    Jacobian dfdJ, dfdJ_ref;
     Hessian H, H_psd;
-    const double value = f.value_and_gradient(J, G, &H_psd);
-    const double value_ref = f.value_and_gradient(J, G_ref, &H, false);
-    CHECK(value == value_ref && G == G_ref);
+    const double value = f.value_and_gradient(J, dfdJ, &H_psd);
+    const double value_ref = f.value_and_gradient(J, dfdJ_ref, &H, false);
+    CHECK(value == value_ref && dfdJ == dfdJ_ref);
     const double norm = H.norm();
     if(!(norm > 0) || !std::isfinite(norm)) { CHECK_MESSAGE(false, "Hessian norm " << norm); continue; }
+
+    // the signed SVD
+    Jacobian U, V;
+    Eigen::Matrix<double, d, 1> sigma;
+    signed_svd<d>(J, U, sigma, V);
+    const double scale_J = std::max(J.norm(), std::numeric_limits<double>::min());
+    CHECK_MESSAGE((U * sigma.asDiagonal() * V.transpose() - J).norm() <= 1e-14 * scale_J, "d=" << d << " trial " << trial << ": SVD off");
+    CHECK((U.transpose() * U - Jacobian::Identity()).norm() <= 1e-14 && (V.transpose() * V - Jacobian::Identity()).norm() <= 1e-14);
+    CHECK(std::abs(U.determinant() - 1) <= 1e-14 && std::abs(V.determinant() - 1) <= 1e-14);
+    for(int i = 0; i + 1 < d; ++i) CHECK(sigma(i) >= std::abs(sigma(i + 1)));
+    if(std::abs(J.determinant()) > 1e-10 * std::pow(scale_J, d)) CHECK((sigma(d - 1) > 0) == (J.determinant() > 0));
 
     // the eigenpairs are orthonormal eigenpairs of H
     const auto A = f.partials(J, true);
@@ -102,9 +122,144 @@ void check_projection(std::mt19937& random, int trials)
     CHECK_MESSAGE(eigen.eigenvalues().minCoeff() >= -1e-12 * norm,
                   "d=" << d << " trial " << trial << ": eigenvalue " << eigen.eigenvalues().minCoeff() << " of |H| " << norm);
     if(!(H_psd == H)) ++projected;
+
+    // the element Hessian in vertex coordinates is K^T H_psd K, K: vec X -> vec J = vec(X G)
+    typename Energy::Gradient_operator G;
+    Jacobian E;
+    for(int i = 0; i < d * d; ++i) E.data()[i] = normal(random);
+    if(E.determinant() < 0) E.col(0) *= -1;
+    G.template bottomRows<d>() = E.inverse();
+    G.row(0) = -G.template bottomRows<d>().colwise().sum();
+    Eigen::Matrix<double, d * d, d * (d + 1)> K = Eigen::Matrix<double, d * d, d * (d + 1)>::Zero();
+    for(int a = 0; a <= d; ++a)
+      for(int c = 0; c < d; ++c)
+        for(int r = 0; r < d; ++r) K(r + d * c, r + d * a) = G(a, c);
+    const double weight = 0.25;
+    const typename Energy::Vertex_hessian M_ref = weight * K.transpose() * H_ref * K;
+    typename Energy::Vertex_hessian M;
+    Energy::vertex_hessian(J, A, G, weight, M);
+    const double vertex_difference = (M - M_ref).norm() / (weight * K.squaredNorm() * norm);
+    worst_vertex = std::max(worst_vertex, vertex_difference);
+    CHECK_MESSAGE(vertex_difference <= 1e-8, "d=" << d << " trial " << trial << ": vertex Hessian off by " << vertex_difference);
   }
   std::cout << "d=" << d << ": " << trials << " Jacobians (" << projected << " projected), largest relative difference "
-            << worst << ", largest eigenpair residual " << worst_eigenpair << "\n";
+            << worst << ", largest eigenpair residual " << worst_eigenpair
+            << ", largest vertex Hessian difference " << worst_vertex << "\n";
+}
+
+/// A grid of n^d cubes (2 triangles or 6 tetrahedra each) on [0,1]^d with
+/// its boundary fixed and its interior vertices moved at random by up to
+/// `amplitude` cells (tangling many elements).
+template <int d>
+Untangling_problem<d> perturbed_grid(int n, double amplitude, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> offset(-amplitude / n, amplitude / n);
+  Untangling_input<d> in;
+  const int side = n + 1, count = d == 2 ? side * side : side * side * side;
+  auto id = [side](int i, int j, int k) { return std::size_t((k * side + j) * side + i); };
+  for(int v = 0; v < count; ++v) {
+    const int i = v % side, j = (v / side) % side, k = v / (side * side);
+    Eigen::Matrix<double, d, 1> p;
+    p(0) = double(i) / n;
+    p(1) = double(j) / n;
+    if constexpr(d == 3) p(2) = double(k) / n;
+    const bool boundary = i == 0 || j == 0 || i == n || j == n || (d == 3 && (k == 0 || k == n));
+    if(!boundary)
+      for(int c = 0; c < d; ++c) p(c) += offset(random);
+    in.positions.push_back(p);
+    in.is_fixed.push_back(boundary);
+  }
+  for(int k = 0; k < (d == 2 ? 1 : n); ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) {
+        if constexpr(d == 2) {
+          in.elements.push_back({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0)});
+          in.elements.push_back({id(i, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0)});
+        } else {
+          // Kuhn subdivision: paths from corner 000 to 111 (orientation fixed by the targets)
+          const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+          for(const auto& path : paths) {
+            int c[3] = {i, j, k};
+            std::array<std::size_t, 4> t;
+            t[0] = id(c[0], c[1], c[2]);
+            for(int s = 0; s < 3; ++s) { ++c[path[s]]; t[s + 1] = id(c[0], c[1], c[2]); }
+            in.elements.push_back(t);
+          }
+        }
+      }
+  return make_untangling_problem<d>(in);
+}
+
+/// The assembled Newton system against a plain sum over the elements of
+/// w_k K^T P_k K (P_k the numerical positive part), and the same bits with
+/// one and two threads.
+template <int d>
+void check_assembly(std::mt19937& random, int n)
+{
+  Untangling_problem<d> P = perturbed_grid<d>(n, 1.5, random);
+  const double theta = d == 2 ? 1. / 128 : 0.5;
+  const double eps = 0.3 * std::abs(determinant_summary(P, P.x.data()).min_det) + 1e-3;
+  Newton_solver<d> newton(P);
+  int free = 0;
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v) free += newton.free_index(v) >= 0;
+  Eigen::VectorXd g(d * free);
+  const double F = newton.assemble(P, eps, theta, g);
+  const Eigen::SparseMatrix<double> H = newton.hessian();
+
+  // reference: energy, gradient and full Hessian element by element
+  const Simplex_energy<d> f{theta, eps};
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd g_ref = Eigen::VectorXd::Zero(d * free);
+  double F_ref = 0;
+  for(std::size_t k = 0; k < P.elements.size(); ++k) {
+    const auto J = jacobian(P, P.x.data(), k);
+    Eigen::Matrix<double, d, d> dfdJ;
+    typename Simplex_energy<d>::Hessian HJ;
+    F_ref += P.weights[k] * f.value_and_gradient(J, dfdJ, &HJ, false);
+    HJ = Simplex_energy<d>::positive_part(HJ);
+    const auto& G = P.gradient_operators[k];
+    const Eigen::Matrix<double, d, d + 1> ge = P.weights[k] * dfdJ * G.transpose();
+    for(int a = 0; a <= d; ++a) {
+      const int fa = newton.free_index(P.elements[k][a]);
+      if(fa < 0) continue;
+      g_ref.template segment<d>(d * fa) += ge.col(a);
+      for(int b = 0; b <= d; ++b) {
+        const int fb = newton.free_index(P.elements[k][b]);
+        if(fb < 0) continue;
+        for(int r = 0; r < d; ++r)
+          for(int s = 0; s < d; ++s) {
+            double h = 0;   // sum_{c,e} G(a,c) G(b,e) HJ((r,c),(s,e))
+            for(int c = 0; c < d; ++c)
+              for(int e = 0; e < d; ++e) h += G(a, c) * G(b, e) * HJ(r + d * c, s + d * e);
+            triplets.emplace_back(d * fa + r, d * fb + s, P.weights[k] * h);
+          }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> H_ref(d * free, d * free);
+  H_ref.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SparseMatrix<double> H_full = H.template selfadjointView<Eigen::Lower>();
+  CHECK_MESSAGE(std::abs(F - F_ref) <= 1e-12 * std::abs(F_ref), "d=" << d << ": energy " << F << " vs " << F_ref);
+  CHECK_MESSAGE((g - g_ref).norm() <= 1e-12 * g_ref.norm(), "d=" << d << ": gradient off by " << (g - g_ref).norm() / g_ref.norm());
+  CHECK_MESSAGE((H_full - H_ref).norm() <= 1e-10 * H_ref.norm(), "d=" << d << ": Hessian off by " << (H_full - H_ref).norm() / H_ref.norm());
+  std::cout << "d=" << d << ": assembled " << P.elements.size() << " elements, Hessian relative difference "
+            << (H_full - H_ref).norm() / H_ref.norm() << "\n";
+
+#ifdef CGAL_LINKED_WITH_TBB
+  // the same bits with two threads, and with one
+  std::vector<double> gradient(P.x.size()), gradient_threads(P.x.size());
+  const double E = energy<d>(P, P.x.data(), eps, theta), E_gradient = energy<d>(P, P.x.data(), eps, theta, gradient.data());
+  for(int threads : {2, 1}) {
+    tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
+    Eigen::VectorXd g_threads(d * free);
+    const double F_threads = newton.assemble(P, eps, theta, g_threads);
+    const Eigen::SparseMatrix<double>& H_threads = newton.hessian();
+    CHECK(F_threads == F && g_threads == g);
+    CHECK(std::equal(H.valuePtr(), H.valuePtr() + H.nonZeros(), H_threads.valuePtr()));
+    CHECK(energy<d>(P, P.x.data(), eps, theta) == E);
+    CHECK(energy<d>(P, P.x.data(), eps, theta, gradient_threads.data()) == E_gradient && gradient_threads == gradient);
+  }
+#endif
 }
 
 int main()
@@ -112,6 +267,8 @@ int main()
   std::mt19937 random(11);
   check_projection<2>(random, 4000);
   check_projection<3>(random, 4000);
+  check_assembly<2>(random, 50);
+  check_assembly<3>(random, 12);
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();
 }

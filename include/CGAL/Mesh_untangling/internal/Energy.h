@@ -4,8 +4,10 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_ENERGY_H
 
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -36,39 +38,52 @@ struct Determinant_summary
 template <int d>
 Determinant_summary<d> determinant_summary(const Untangling_problem<d>& P, const double* x)
 {
+  // per chunk, then combined: min and counts are exact, so any order gives the same
+  const std::size_t m = P.elements.size();
+  std::vector<Determinant_summary<d>> partial((m + element_chunk_size - 1) / element_chunk_size);
+  for_each_chunk(m, element_chunk_size, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    Determinant_summary<d>& s = partial[c];
+    for(std::size_t k = begin; k < end; ++k) {
+      const double D = jacobian(P, x, k).determinant();
+      s.min_det = std::min(s.min_det, D);
+      if(D <= 0) ++s.non_positive;
+    }
+  });
   Determinant_summary<d> s;
-  for(std::size_t k = 0; k < P.elements.size(); ++k) {
-    const double D = jacobian(P, x, k).determinant();
-    s.min_det = std::min(s.min_det, D);
-    if(D <= 0) ++s.non_positive;
+  for(const auto& p : partial) {
+    s.min_det = std::min(s.min_det, p.min_det);
+    s.non_positive += p.non_positive;
   }
   return s;
 }
 
 /// F(X, eps) = sum_k w_k f_eps(J_k) and its gradient (zero on fixed vertices).
+/// Elements are evaluated in parallel chunks; F is summed in a fixed order
+/// (fixed_order_sum) and the gradient gathered serially in element order, so
+/// the result does not depend on the number of threads.
 template <int d>
 double energy(const Untangling_problem<d>& P, const double* x, double eps, double theta, double* gradient = nullptr)
 {
   const Simplex_energy<d> f{theta, eps};
-  const std::size_t n = P.number_of_vertices;
-  if(gradient != nullptr)
-    std::fill(gradient, gradient + d * n, 0.);
-  double F = 0;
-  Eigen::Matrix<double, d, d> dfdJ;
-  for(std::size_t k = 0; k < P.elements.size(); ++k) {
-    const auto J = jacobian(P, x, k);
-    if(gradient == nullptr) {
-      F += P.weights[k] * f.value(J);
-      continue;
-    }
-    F += P.weights[k] * f.value_and_gradient(J, dfdJ);
-    const Eigen::Matrix<double, d, d + 1> g = P.weights[k] * dfdJ * P.gradient_operators[k].transpose();
+  const std::size_t m = P.elements.size();
+  if(gradient == nullptr)
+    return fixed_order_sum(m, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x, k)); });
+
+  using Element_gradient = Eigen::Matrix<double, d, d + 1>;
+  std::vector<Element_gradient> element_gradients(m);
+  const double F = fixed_order_sum(m, [&](std::size_t k) {
+    Eigen::Matrix<double, d, d> dfdJ;
+    const double value = f.value_and_gradient(jacobian(P, x, k), dfdJ);
+    element_gradients[k] = P.weights[k] * dfdJ * P.gradient_operators[k].transpose();
+    return P.weights[k] * value;
+  });
+  std::fill(gradient, gradient + d * P.number_of_vertices, 0.);
+  for(std::size_t k = 0; k < m; ++k)
     for(int i = 0; i <= d; ++i) {
       const std::size_t v = P.elements[k][i];
       if(!P.is_fixed[v])
-        Eigen::Map<Eigen::Matrix<double, d, 1>>(gradient + d * v) += g.col(i);
+        Eigen::Map<Eigen::Matrix<double, d, 1>>(gradient + d * v) += element_gradients[k].col(i);
     }
-  }
   return F;
 }
 

@@ -3,8 +3,9 @@
 //
 // The default inner solver: Newton steps on the positive semi-definite part
 // of the Hessian (per element, projected in Jacobian space), a sparse
-// Cholesky factorization whose symbolic analysis is done once, and an Armijo
-// backtracking line search.  The projected Hessian is spectrally equivalent
+// Cholesky factorization (of the lower triangle) whose symbolic analysis is
+// done once, and an Armijo backtracking line search.  Assembly runs the
+// elements in parallel (TBB) with results independent of the thread count.  The projected Hessian is spectrally equivalent
 // to the finite element Laplacian, so a handful of steps per eps suffice
 // where a first-order method needs thousands of evaluations.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
@@ -12,6 +13,7 @@
 
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
+#include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -29,32 +31,36 @@ namespace Mesh_untangling {
 namespace internal {
 
 /// Sparsity of the Hessian restricted to free vertices, stored as dense
-/// d x d blocks; every element knows where its blocks go, so assembly is a
-/// plain accumulation without searching.
+/// d x d blocks in its lower triangle only (block rows >= block column; the
+/// diagonal blocks whole), which is all the Cholesky factorizations read.
+/// Every element knows where its blocks go, so assembly is a plain
+/// accumulation without searching.  The elements are also coloured so that
+/// no two of one colour share a free vertex: within a colour they can add
+/// their gradient entries and blocks concurrently without races.
 template <int d>
 class Hessian_pattern
 {
 public:
   explicit Hessian_pattern(const Untangling_problem<d>& P)
   {
-    const std::size_t n = P.number_of_vertices;
+    const std::size_t n = P.number_of_vertices, m = P.elements.size();
     free_index_.assign(n, -1);
     for(std::size_t v = 0; v < n; ++v)
       if(!P.is_fixed[v]) free_index_[v] = number_of_free_++;
 
-    // rows of every block column
+    // rows of every block column (lower triangle: rows >= column)
     std::vector<std::vector<int>> rows(number_of_free_);
     for(const auto& e : P.elements)
       for(std::size_t a : e)
         for(std::size_t b : e)
-          if(free_index_[a] >= 0 && free_index_[b] >= 0)
+          if(free_index_[b] >= 0 && free_index_[a] >= free_index_[b])
             rows[free_index_[b]].push_back(free_index_[a]);
-    column_start_.assign(number_of_free_ + 1, 0);
+    std::vector<int> column_start(number_of_free_ + 1, 0);   // per block column, into its blocks
     for(int j = 0; j < number_of_free_; ++j) {
       auto& r = rows[j];
       std::sort(r.begin(), r.end());
       r.erase(std::unique(r.begin(), r.end()), r.end());
-      column_start_[j + 1] = column_start_[j] + static_cast<int>(r.size());
+      column_start[j + 1] = column_start[j] + static_cast<int>(r.size());
     }
 
     // scalar compressed-column structure: column J*d+c holds the blocks of block column J
@@ -63,7 +69,7 @@ public:
     std::vector<Eigen::Index> nnz(N);
     for(int j = 0; j < number_of_free_; ++j)
       for(int c = 0; c < d; ++c)
-        nnz[d * j + c] = d * (column_start_[j + 1] - column_start_[j]);
+        nnz[d * j + c] = d * (column_start[j + 1] - column_start[j]);
     if(N > 0) matrix_.reserve(nnz);   // Eigen reads past an empty reserve list
     for(int j = 0; j < number_of_free_; ++j)
       for(int c = 0; c < d; ++c)
@@ -72,56 +78,112 @@ public:
             matrix_.insert(d * i + r, d * j + c) = 0;
     matrix_.makeCompressed();
 
-    // where each element's (a, b) block lands
-    slots_.resize(P.elements.size() * (d + 1) * (d + 1));
-    for(std::size_t k = 0; k < P.elements.size(); ++k)
+    colour_elements(P);
+
+    // where each element's (a, b) block lands, in the order the colours list
+    // the elements (so that assembly reads this table sequentially)
+    targets_.resize(m * (d + 1) * (d + 1));
+    for(std::size_t position = 0; position < m; ++position) {
+      const auto& e = P.elements[coloured_[position]];
       for(int a = 0; a <= d; ++a)
         for(int b = 0; b <= d; ++b) {
-          const int i = free_index_[P.elements[k][a]], j = free_index_[P.elements[k][b]];
-          int& slot = slots_[(k * (d + 1) + a) * (d + 1) + b];
-          slot = -1;
-          if(i < 0 || j < 0) continue;
+          const int i = free_index_[e[a]], j = free_index_[e[b]];
+          Target& t = targets_[(position * (d + 1) + a) * (d + 1) + b];
+          if(j < 0 || i < j) continue;   // fixed vertex, or upper triangle
           const auto& r = rows[j];
-          slot = column_start_[j] + static_cast<int>(std::lower_bound(r.begin(), r.end(), i) - r.begin());
+          const int block = static_cast<int>(std::lower_bound(r.begin(), r.end(), i) - r.begin());
+          const int blocks_in_column = column_start[j + 1] - column_start[j];
+          t.offset = d * d * column_start[j] + d * block;
+          t.stride = d * blocks_in_column;
         }
-    block_column_.resize(column_start_.back());
-    for(int j = 0; j < number_of_free_; ++j)
-      for(int s = column_start_[j]; s < column_start_[j + 1]; ++s) block_column_[s] = j;
+    }
   }
 
   int number_of_free() const { return number_of_free_; }
   int free_index(std::size_t v) const { return free_index_[v]; }
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
 
-  /// Adds the d x d block B at the (a, b) slot of element k.
-  void add(std::size_t k, int a, int b, const Eigen::Matrix<double, d, d>& B)
+  std::size_t number_of_colours() const { return colour_start_.size() - 1; }
+  /// The elements of colour c, increasing: positions colour_start(c) to
+  /// colour_start(c + 1) - 1 of `coloured_element`.
+  std::size_t colour_start(std::size_t c) const { return colour_start_[c]; }
+  std::size_t coloured_element(std::size_t position) const { return coloured_[position]; }
+
+  /// Adds the d x d block B (d2F/dx_a dx_b) of the element at `position` in
+  /// colour order where it belongs in the lower triangle; nothing when it
+  /// belongs to the upper one (its transpose, the (b, a) block, is added
+  /// instead) or to a fixed vertex.
+  template <class Block>
+  void add(std::size_t position, int a, int b, const Block& B)
   {
-    const int slot = slots_[(k * (d + 1) + a) * (d + 1) + b];
-    if(slot < 0) return;
-    const int j = block_column_[slot];
-    const int blocks_in_column = column_start_[j + 1] - column_start_[j];
-    double* values = matrix_.valuePtr() + d * d * column_start_[j] + d * (slot - column_start_[j]);
+    const Target& t = targets_[(position * (d + 1) + a) * (d + 1) + b];
+    if(t.offset < 0) return;
+    double* values = matrix_.valuePtr() + t.offset;
     for(int c = 0; c < d; ++c)
       for(int r = 0; r < d; ++r)
-        values[c * d * blocks_in_column + r] += B(r, c);
+        values[c * t.stride + r] += B(r, c);
   }
 
 private:
+  /// Greedy colouring in element order: the smallest colour no earlier
+  /// element sharing a free vertex has.
+  void colour_elements(const Untangling_problem<d>& P)
+  {
+    const std::size_t m = P.elements.size();
+    std::vector<std::size_t> star_start(number_of_free_ + 1, 0), star;   // free vertex -> elements
+    for(const auto& e : P.elements)
+      for(std::size_t v : e)
+        if(free_index_[v] >= 0) ++star_start[free_index_[v] + 1];
+    for(int v = 0; v < number_of_free_; ++v) star_start[v + 1] += star_start[v];
+    star.resize(star_start.back());
+    std::vector<std::size_t> fill(star_start.begin(), star_start.end() - 1);
+    for(std::size_t k = 0; k < m; ++k)
+      for(std::size_t v : P.elements[k])
+        if(free_index_[v] >= 0) star[fill[free_index_[v]]++] = k;
+
+    std::vector<int> colour(m, -1);
+    std::vector<std::size_t> taken;   // taken[c] == k + 1: colour c is used next to element k
+    int colours = 0;
+    for(std::size_t k = 0; k < m; ++k) {
+      for(std::size_t v : P.elements[k]) {
+        if(free_index_[v] < 0) continue;
+        for(std::size_t s = star_start[free_index_[v]]; s < star_start[free_index_[v] + 1]; ++s)
+          if(colour[star[s]] >= 0) taken[colour[star[s]]] = k + 1;
+      }
+      int c = 0;
+      while(c < colours && taken[c] == k + 1) ++c;
+      if(c == colours) { ++colours; taken.push_back(0); }
+      colour[k] = c;
+    }
+    colour_start_.assign(colours + 1, 0);
+    for(std::size_t k = 0; k < m; ++k) ++colour_start_[colour[k] + 1];
+    for(int c = 0; c < colours; ++c) colour_start_[c + 1] += colour_start_[c];
+    coloured_.resize(m);
+    std::vector<std::size_t> next(colour_start_.begin(), colour_start_.end() - 1);
+    for(std::size_t k = 0; k < m; ++k) coloured_[next[colour[k]]++] = k;
+  }
+
+  struct Target
+  {
+    int offset = -1;   // of the block's (0, 0) entry in the values of matrix_; -1: not stored
+    int stride = 0;    // from one column of the block to the next
+  };
+
   std::vector<int> free_index_;
   int number_of_free_ = 0;
-  std::vector<int> column_start_;   // per block column, into the block slots
-  std::vector<int> block_column_;   // per block slot
-  std::vector<int> slots_;          // per element and (a, b)
+  std::vector<Target> targets_;     // per element (in colour order) and (a, b)
   Eigen::SparseMatrix<double> matrix_;
+  std::vector<std::size_t> colour_start_{0};   // per colour, into coloured_
+  std::vector<std::size_t> coloured_;          // elements sorted by colour, then index
 };
 
 template <int d>
 class Newton_solver
 {
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-  using Factorization = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>;
+  using Factorization = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
 #else
-  using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+  using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
 #endif
 
 public:
@@ -132,10 +194,10 @@ public:
     Inner_statistics stats;
     const int N = d * pattern_.number_of_free();
     if(N == 0) return stats;
-    std::vector<double> gradient(P.x.size()), trial(P.x.size());
+    std::vector<double> trial(P.x.size());
     Eigen::VectorXd g(N), step(N);
 
-    double E = assemble(P, eps, theta, gradient, g);
+    double E = assemble(P, eps, theta, g);
     ++stats.evaluations;
     if(!std::isfinite(E)) { stats.finite = false; return stats; }
 
@@ -162,7 +224,7 @@ public:
       if(!accepted) break;
       P.x.swap(trial);
       const double decrease = E - E_trial;
-      E = assemble(P, eps, theta, gradient, g);
+      E = assemble(P, eps, theta, g);
       ++stats.evaluations;
       if(!std::isfinite(E)) { stats.finite = false; break; }
       // The Newton decrement says how far the quadratic model still sees to go.
@@ -171,44 +233,54 @@ public:
     return stats;
   }
 
-private:
-  /// Energy, gradient (full and restricted to free unknowns) and the PSD Hessian.
-  double assemble(const Untangling_problem<d>& P, double eps, double theta,
-                  std::vector<double>& gradient, Eigen::VectorXd& g)
+  /// The Hessian as last assembled: free unknowns only (vertex by vertex,
+  /// `free_index`), lower triangle (and whole diagonal blocks).
+  const Eigen::SparseMatrix<double>& hessian() { return pattern_.matrix(); }
+  int free_index(std::size_t v) const { return pattern_.free_index(v); }
+
+  /// Energy, gradient (restricted to free unknowns) and the PSD Hessian.
+  ///
+  /// Colour by colour, the elements of one colour run in parallel chunks and
+  /// add their gradient entries and Hessian blocks in place: no two share a
+  /// free vertex, so no two write the same entry, and every entry receives
+  /// its terms in colour order whatever the number of threads.  The energy
+  /// is summed over per-element values in a fixed order (fixed_order_sum).
+  /// Hence the same bits for any number of threads, and without TBB.
+  double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g)
   {
     auto& H = pattern_.matrix();
     std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
-    std::fill(gradient.begin(), gradient.end(), 0.);
+    g.setZero();
+    element_energy_.resize(P.elements.size());
     const Simplex_energy<d> f{theta, eps};
-    Eigen::Matrix<double, d, d> dfdJ;
-    typename Simplex_energy<d>::Hessian HJ;
-    double F = 0;
-    for(std::size_t k = 0; k < P.elements.size(); ++k) {
-      const auto J = jacobian(P, P.x.data(), k);
-      const double w = P.weights[k];
-      F += w * f.value_and_gradient(J, dfdJ, &HJ);
-      const auto& G = P.gradient_operators[k];
-      const Eigen::Matrix<double, d, d + 1> ge = w * dfdJ * G.transpose();
-      for(int a = 0; a <= d; ++a)
-        Eigen::Map<Eigen::Matrix<double, d, 1>>(&gradient[d * P.elements[k][a]]) += ge.col(a);
-      // d2F/dx_a dx_b (r, s) = sum_{c,e} HJ((r,c),(s,e)) G(a,c) G(b,e), J flattened column-major
-      for(int a = 0; a <= d; ++a)
-        for(int b = 0; b <= d; ++b) {
-          Eigen::Matrix<double, d, d> B = Eigen::Matrix<double, d, d>::Zero();
-          for(int c = 0; c < d; ++c)
-            for(int e = 0; e < d; ++e)
-              B += (G(a, c) * G(b, e)) * HJ.template block<d, d>(d * c, d * e);
-          pattern_.add(k, a, b, w * B);
+    for(std::size_t colour = 0; colour < pattern_.number_of_colours(); ++colour) {
+      const std::size_t first = pattern_.colour_start(colour), size = pattern_.colour_start(colour + 1) - first;
+      for_each_chunk(size, element_chunk_size / 2, [&](std::size_t, std::size_t begin, std::size_t end) {
+        typename Simplex_energy<d>::Vertex_hessian M;
+        for(std::size_t position = first + begin; position < first + end; ++position) {
+          const std::size_t k = pattern_.coloured_element(position);
+          const auto J = jacobian(P, P.x.data(), k);
+          const auto A = f.partials(J, true);
+          const double w = P.weights[k];
+          const auto& G = P.gradient_operators[k];
+          element_energy_[k] = w * A.f;
+          const Eigen::Matrix<double, d, d> dfdJ = 2 * A.s * J + A.D * A.C;
+          const Eigen::Matrix<double, d, d + 1> ge = w * dfdJ * G.transpose();
+          for(int a = 0; a <= d; ++a) {
+            const int fa = pattern_.free_index(P.elements[k][a]);
+            if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
+          }
+          Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
+          for(int a = 0; a <= d; ++a)
+            for(int b = 0; b <= d; ++b)
+              pattern_.add(position, a, b, M.template block<d, d>(d * a, d * b));
         }
+      });
     }
-    for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
-      const int fi = pattern_.free_index(v);
-      if(fi >= 0)
-        for(int c = 0; c < d; ++c) g[d * fi + c] = gradient[d * v + c];
-    }
-    return F;
+    return fixed_order_sum(P.elements.size(), [this](std::size_t k) { return element_energy_[k]; });
   }
 
+private:
   bool solve(const Eigen::VectorXd& g, Eigen::VectorXd& step)
   {
     auto& H = pattern_.matrix();
@@ -232,6 +304,7 @@ private:
 
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
+  std::vector<double> element_energy_;
 };
 
 } // namespace internal

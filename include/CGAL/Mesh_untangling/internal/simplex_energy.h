@@ -15,6 +15,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -34,6 +36,72 @@ struct Regularized_determinant
     second = eps * eps / (2 * r * r * r);
   }
 };
+
+/// J = U diag(sigma) V^T with rotations U and V (det +1), |sigma| decreasing
+/// and the last sigma carrying the sign of det J ("signed SVD").  One-sided
+/// (Hestenes) Jacobi: plane rotations on the right make the columns of J V
+/// orthogonal to working precision (backward stable, and several times
+/// faster on 2 x 2 and 3 x 3 than a general two-sided SVD); U is then
+/// completed from the columns so that it is a rotation even when J is
+/// singular.
+template <int d>
+void signed_svd(const Eigen::Matrix<double, d, d>& J, Eigen::Matrix<double, d, d>& U, Eigen::Matrix<double, d, 1>& sigma,
+                Eigen::Matrix<double, d, d>& V)
+{
+  using Matrix = Eigen::Matrix<double, d, d>;
+  using Vector = Eigen::Matrix<double, d, 1>;
+  Matrix A = J;
+  V.setIdentity();
+  const double tolerance = 4 * std::numeric_limits<double>::epsilon();
+  for(int sweep = 0; sweep < 32; ++sweep) {
+    bool rotated = false;
+    for(int p = 0; p < d; ++p)
+      for(int q = p + 1; q < d; ++q) {
+        const double alpha = A.col(p).squaredNorm(), beta = A.col(q).squaredNorm(), gamma = A.col(p).dot(A.col(q));
+        if(!(std::abs(gamma) > tolerance * std::sqrt(alpha * beta))) continue;
+        rotated = true;
+        // the rotation that zeroes the (p, q) entry of A^T A
+        const double zeta = (beta - alpha) / (2 * gamma);
+        const double t = (zeta >= 0 ? 1. : -1.) / (std::abs(zeta) + std::sqrt(1 + zeta * zeta));
+        const double c = 1 / std::sqrt(1 + t * t), s = c * t;
+        for(int i = 0; i < d; ++i) {
+          const double ap = A(i, p), aq = A(i, q), vp = V(i, p), vq = V(i, q);
+          A(i, p) = c * ap - s * aq;  A(i, q) = s * ap + c * aq;
+          V(i, p) = c * vp - s * vq;  V(i, q) = s * vp + c * vq;
+        }
+      }
+    if(!rotated) break;
+  }
+  // columns by decreasing norm
+  Vector norm2;
+  for(int i = 0; i < d; ++i) norm2(i) = A.col(i).squaredNorm();
+  for(int i = 0; i < d; ++i) {
+    int largest = i;
+    for(int j = i + 1; j < d; ++j)
+      if(norm2(j) > norm2(largest)) largest = j;
+    if(largest != i) { A.col(i).swap(A.col(largest)); V.col(i).swap(V.col(largest)); std::swap(norm2(i), norm2(largest)); }
+  }
+  // U: the normalized columns, completed to a rotation
+  if(!(norm2(0) > 0)) { U.setIdentity(); sigma.setZero(); return; }
+  sigma(0) = std::sqrt(norm2(0));
+  U.col(0) = A.col(0) / sigma(0);
+  if constexpr(d == 2) {
+    U.col(1) << -U(1, 0), U(0, 0);
+  } else {
+    Vector u = A.col(1) - A.col(1).dot(U.col(0)) * U.col(0);
+    if(!(u.squaredNorm() > 0)) {   // rank one: any unit vector orthogonal to u_0
+      int axis = 0;
+      for(int i = 1; i < 3; ++i)
+        if(std::abs(U(i, 0)) < std::abs(U(axis, 0))) axis = i;
+      u = U.col(0).cross(Vector::Unit(axis));
+    }
+    U.col(1) = u.normalized();
+    sigma(1) = A.col(1).dot(U.col(1));
+    U.col(2) = U.col(0).cross(U.col(1));
+  }
+  sigma(d - 1) = A.col(d - 1).dot(U.col(d - 1));   // signed
+  if(V.determinant() < 0) { V.col(d - 1) *= -1; sigma(d - 1) *= -1; }
+}
 
 template <int d>
 struct Simplex_energy
@@ -105,11 +173,14 @@ struct Simplex_energy
   /// d2F/dJ2 = 2 A_s I + 2 A_sD (j c^T + c j^T) + A_DD c c^T + A_D d2D/dJ2 (j = vec J, c = vec C).
   static Hessian unprojected_hessian(const Jacobian& J, const Partials& A)
   {
+    // the rank-2 part as c y^T + y c^T, y = 2 A_sD j + A_DD c / 2
     const Eigen::Map<const Flat> j(J.data()), c(A.C.data());
-    Hessian H = 2 * A.s * Hessian::Identity();
-    H += 2 * A.sD * (j * c.transpose() + c * j.transpose());
-    H += A.DD * c * c.transpose();
-    H += A.D * determinant_hessian(J);
+    const Flat y = 2 * A.sD * j + (A.DD / 2) * c;
+    Hessian H;
+    H.noalias() = c * y.transpose();
+    H.noalias() += y * c.transpose();
+    H.diagonal().array() += 2 * A.s;
+    add_determinant_hessian(J, A.D, H);
     return H;
   }
 
@@ -127,40 +198,45 @@ struct Simplex_energy
   ///  - the d "scaling" modes dM = diag(w), w the eigenvectors of the d x d
   ///    matrix  2 A_s I + 2 A_sD (sigma c^T + c sigma^T) + A_DD c c^T + A_D Q,
   ///    c_i = dD/dsigma_i (product of the other sigmas), Q_ij = sigma_k for i != j.
-  /// Calls `mode(lambda, E)` for each eigenpair, E = U dM V^T (unit norm).
+  /// Calls `mode(lambda, E)` for each eigenpair, E = U dM V^T (unit norm);
+  /// with `negative_only`, for those with lambda < 0 only (skipping the work
+  /// for the others).
   template <class Mode>
-  static void for_each_eigenpair(const Jacobian& J, const Partials& A, Mode&& mode)
+  static void for_each_eigenpair(const Jacobian& J, const Partials& A, Mode&& mode, bool negative_only = false)
   {
-    Eigen::JacobiSVD<Jacobian, Eigen::NoQRPreconditioner> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Jacobian U = svd.matrixU(), V = svd.matrixV();
-    Eigen::Matrix<double, d, 1> sigma = svd.singularValues();
-    if(U.determinant() < 0) { U.col(d - 1) *= -1; sigma(d - 1) *= -1; }
-    if(V.determinant() < 0) { V.col(d - 1) *= -1; sigma(d - 1) *= -1; }
+    Jacobian U, V;
+    Eigen::Matrix<double, d, 1> sigma;
+    signed_svd<d>(J, U, sigma, V);
+    // sigma_k for the pair i != j (k the third index in 3D; 1 in 2D)
+    auto other = [&sigma](int i, int j) { return d == 2 ? 1. : sigma(3 - i - j); };
+
+    const double r = std::sqrt(0.5);
+    for(int i = 0; i < d; ++i)
+      for(int j = i + 1; j < d; ++j) {
+        const double flip = 2 * A.s - A.D * other(i, j), twist = 2 * A.s + A.D * other(i, j);
+        if(negative_only && flip >= 0 && twist >= 0) continue;
+        const Jacobian a = U.col(i) * V.col(j).transpose(), b = U.col(j) * V.col(i).transpose();
+        if(!negative_only || flip < 0) mode(flip, Jacobian(r * (a + b)));
+        if(!negative_only || twist < 0) mode(twist, Jacobian(r * (a - b)));
+      }
 
     Eigen::Matrix<double, d, 1> c;   // dD/dsigma
-    Eigen::Matrix<double, d, d> S;   // the scaling block
     if constexpr(d == 2) {
       c << sigma(1), sigma(0);
     } else {
       c << sigma(1) * sigma(2), sigma(0) * sigma(2), sigma(0) * sigma(1);
     }
-    // sigma_k for the pair i != j (k the third index in 3D; 1 in 2D)
-    auto other = [&sigma](int i, int j) { return d == 2 ? 1. : sigma(3 - i - j); };
+    Eigen::Matrix<double, d, d> S;   // the scaling block
     for(int i = 0; i < d; ++i)
       for(int j = 0; j < d; ++j)
         S(i, j) = 2 * A.sD * (sigma(i) * c(j) + c(i) * sigma(j)) + A.DD * c(i) * c(j)
                 + (i == j ? 2 * A.s : A.D * other(i, j));
-
-    const double r = std::sqrt(0.5);
-    for(int i = 0; i < d; ++i)
-      for(int j = i + 1; j < d; ++j) {
-        const Jacobian a = U.col(i) * V.col(j).transpose(), b = U.col(j) * V.col(i).transpose();
-        mode(2 * A.s - A.D * other(i, j), Jacobian(r * (a + b)));   // flip
-        mode(2 * A.s + A.D * other(i, j), Jacobian(r * (a - b)));   // twist
-      }
+    if(negative_only && is_positive_definite(S))
+      return;   // no negative scaling mode
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, d, d>> scaling(S);
     for(int m = 0; m < d; ++m)
-      mode(scaling.eigenvalues()(m), Jacobian(U * scaling.eigenvectors().col(m).asDiagonal() * V.transpose()));
+      if(!negative_only || scaling.eigenvalues()(m) < 0)
+        mode(scaling.eigenvalues()(m), Jacobian(U * scaling.eigenvectors().col(m).asDiagonal() * V.transpose()));
   }
 
   /// d2F/dJ2 with its negative eigenvalues set to zero, from the closed-form
@@ -169,11 +245,58 @@ struct Simplex_energy
   {
     Hessian H = unprojected_hessian(J, A);
     for_each_eigenpair(J, A, [&H](double lambda, const Jacobian& E) {
-      if(lambda >= 0) return;
       const Eigen::Map<const Flat> e(E.data());
       H.noalias() -= (lambda * e) * e.transpose();
-    });
+    }, true);
     return H;
+  }
+
+  using Gradient_operator = Eigen::Matrix<double, d + 1, d>;             // J = X G, X = [x_0 ... x_d]
+  using Vertex_hessian = Eigen::Matrix<double, d * (d + 1), d * (d + 1)>;  // X flattened column by column
+
+  /// weight * K^T P K, P the projected d2F/dJ2 and K the d^2 x d(d+1) map
+  /// vec X -> vec J (K = G^T (x) I_d): the element's Hessian in its vertex
+  /// coordinates.  Built from the same terms as P rather than by products
+  /// with K: with j~ = vec(J G^T), c~ = vec(C G^T), e~ = vec(E G^T),
+  ///   K^T P K = 2 A_s (G G^T (x) I) + c~ y^T + y c~^T + A_D K^T (d2D/dJ2) K - sum_{lambda<0} lambda e~ e~^T,
+  /// y = 2 A_sD j~ + A_DD c~ / 2, and the (a, b) block of K^T (d2D/dJ2) K is
+  /// the d x d matrix (r, s) -> eps_rst (J (g_a x g_b))_t in 3D,
+  /// eps_rs det[g_a g_b] in 2D (g_a the rows of G, eps the Levi-Civita symbols).
+  static void vertex_hessian(const Jacobian& J, const Partials& A, const Gradient_operator& G, double weight,
+                             Vertex_hessian& M)
+  {
+    using Vertex_vector = Eigen::Matrix<double, d * (d + 1), 1>;
+    using Vertex_matrix = Eigen::Matrix<double, d, d + 1>;
+    const Vertex_matrix JG = J * G.transpose(), CG = A.C * G.transpose();
+    const Eigen::Map<const Vertex_vector> j(JG.data()), c(CG.data());
+    const Vertex_vector y = weight * (2 * A.sD * j + (A.DD / 2) * c);
+    M.noalias() = c * y.transpose();
+    M.noalias() += y * c.transpose();
+    const Eigen::Matrix<double, d + 1, d + 1> L = (2 * weight * A.s) * (G * G.transpose());
+    const double wD = weight * A.D;
+    for(int a = 0; a <= d; ++a)
+      for(int b = 0; b <= d; ++b) {
+        auto block = M.template block<d, d>(d * a, d * b);
+        block.diagonal().array() += L(a, b);
+        if(a == b) continue;
+        if constexpr(d == 2) {
+          const double t = wD * (G(a, 0) * G(b, 1) - G(a, 1) * G(b, 0));
+          block(0, 1) += t;
+          block(1, 0) -= t;
+        } else {
+          const Eigen::Vector3d t = wD * (J * G.row(a).transpose().cross(G.row(b).transpose()));
+          block(0, 1) += t(2); block(1, 0) -= t(2);
+          block(1, 2) += t(0); block(2, 1) -= t(0);
+          block(2, 0) += t(1); block(0, 2) -= t(1);
+        }
+      }
+    if(is_positive_definite(unprojected_hessian(J, A)))
+      return;   // nothing to clamp, no SVD needed
+    for_each_eigenpair(J, A, [&](double lambda, const Jacobian& E) {
+      const Vertex_matrix EG = E * G.transpose();
+      const Eigen::Map<const Vertex_vector> e(EG.data());
+      M.noalias() -= (weight * lambda * e) * e.transpose();
+    }, true);
   }
 
   static Jacobian cofactor(const Jacobian& J)
@@ -191,14 +314,31 @@ struct Simplex_energy
     }
   }
 
-  /// d2(det J)/dJ2, in the same (column-major) flattening as Eigen's storage.
-  static Hessian determinant_hessian(const Jacobian& J)
+  /// Whether the Cholesky factorization of the symmetric matrix H (its lower
+  /// triangle) finds only positive pivots: a cheap test before any eigen-solver.
+  template <int n>
+  static bool is_positive_definite(Eigen::Matrix<double, n, n> H)
   {
-    Hessian H = Hessian::Zero();
+    for(int k = 0; k < n; ++k) {
+      const double pivot = H(k, k);
+      if(!(pivot > 0)) return false;
+      for(int j = k + 1; j < n; ++j) {
+        const double factor = H(j, k) / pivot;
+        for(int i = j; i < n; ++i) H(i, j) -= factor * H(i, k);
+      }
+    }
+    return true;
+  }
+
+  /// H += scale * d2(det J)/dJ2, in the same (column-major) flattening as Eigen's storage.
+  static void add_determinant_hessian(const Jacobian& J, double scale, Hessian& H)
+  {
     auto index = [](int row, int col) { return row + d * col; };
     if constexpr(d == 2) {
-      H(index(0, 0), index(1, 1)) = H(index(1, 1), index(0, 0)) = 1;
-      H(index(0, 1), index(1, 0)) = H(index(1, 0), index(0, 1)) = -1;
+      H(index(0, 0), index(1, 1)) += scale;
+      H(index(1, 1), index(0, 0)) += scale;
+      H(index(0, 1), index(1, 0)) -= scale;
+      H(index(1, 0), index(0, 1)) -= scale;
     } else {
       // d2D/dJ_rc dJ_se = e_rst e_ceu J_tu (Levi-Civita symbols)
       for(int r = 0; r < 3; ++r)
@@ -211,11 +351,10 @@ struct Simplex_energy
               if(c == e) continue;
               const int u = 3 - c - e;
               const int sign_cols = ((e - c + 3) % 3 == 1) ? 1 : -1;
-              H(index(r, c), index(s, e)) = sign_rows * sign_cols * J(t, u);
+              H(index(r, c), index(s, e)) += sign_rows * sign_cols * scale * J(t, u);
             }
         }
     }
-    return H;
   }
 
   /// Symmetric matrix with its negative eigenvalues set to zero, numerically

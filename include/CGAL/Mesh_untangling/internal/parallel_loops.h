@@ -1,0 +1,67 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Element loops in fixed-size chunks, run by TBB when it is linked
+// (CGAL_LINKED_WITH_TBB; the number of threads is the caller's, e.g. through
+// tbb::global_control) and serially otherwise.  The chunks, and the order in
+// which their results are combined, never depend on the number of threads,
+// so the solvers give the same bits with 1, 2 or 64 threads and without TBB.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PARALLEL_LOOPS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PARALLEL_LOOPS_H
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// Elements per chunk: large enough to amortize scheduling, small enough to balance.
+constexpr std::size_t element_chunk_size = 512;
+
+/// Calls `body(chunk, begin, end)` for the chunks [begin, end) of [0, n),
+/// chunk c being [c * size, min(n, (c + 1) * size)); chunks may run
+/// concurrently, so `body` must only write what belongs to its chunk.
+template <class Body>
+void for_each_chunk(std::size_t n, std::size_t size, Body&& body)
+{
+  const std::size_t chunks = (n + size - 1) / size;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(chunks > 1) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t c = r.begin(); c != r.end(); ++c) body(c, c * size, std::min(n, (c + 1) * size));
+    });
+    return;
+  }
+#endif
+  for(std::size_t c = 0; c < chunks; ++c) body(c, c * size, std::min(n, (c + 1) * size));
+}
+
+/// Sum of value(k) over [0, n) in a fixed order: left to right within each
+/// chunk of element_chunk_size, then the chunk sums left to right.  Chunks
+/// are evaluated concurrently; the result does not depend on the threads.
+template <class Value>
+double fixed_order_sum(std::size_t n, Value&& value)
+{
+  std::vector<double> partial((n + element_chunk_size - 1) / element_chunk_size, 0.);
+  for_each_chunk(n, element_chunk_size, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    double sum = 0;
+    for(std::size_t k = begin; k < end; ++k) sum += value(k);
+    partial[c] = sum;
+  });
+  double sum = 0;
+  for(double p : partial) sum += p;
+  return sum;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PARALLEL_LOOPS_H
