@@ -3,7 +3,7 @@
 // vertices unchanged bit for bit.
 //
 //   test_data DATA_DIR                 the quick sets: tlc-format and lim/armadillo-598
-//   test_data DATA_DIR --cuboidblocks  the 14 CuboidBlocks cases (long; behind MESH_UNTANGLING_LONG_TESTS)
+//   test_data DATA_DIR --cuboidblocks  the 14 CuboidBlocks cases (100 s each; behind MESH_UNTANGLING_LONG_TESTS)
 //
 // A case listed in `expected_failures` must fail, and every other case must
 // succeed: a newly solved case and a newly failing one both fail the test.
@@ -19,9 +19,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Cases that the default solver does not solve within the time limit below
-// (see the issue note for their figures).
-const std::set<std::string> expected_failures = {};
+// CuboidBlocks cases that the default solver does not solve within the time
+// limit below (measured 2026-11-22 with the benchmark at 100 s; see README).
+const std::set<std::string> expected_failures = {
+  "joint.hexex_block73", "n03c_skijump_box_cyl.hexex_block54", "rockerarm.hexex_block291",
+  "rockerarm.hexex_block344", "rockerarm.hexex_block348", "s16c_torus.hexex_block12"};
 
 bool run(const Case_spec& c, double time_limit, std::size_t expected_input_defects)
 {
@@ -59,7 +61,7 @@ int main(int argc, char** argv)
   for(const Case_spec& c : cases) {
     // lim/armadillo-598: its fixed boundary is over-wound at 5 edges and 2 vertices whose tets are all fixed
     const std::size_t input_defects = c.kind == Case_spec::PAIR ? 7 : 0;
-    const bool solved = run(c, cuboidblocks ? 300. : 600., input_defects);
+    const bool solved = run(c, cuboidblocks ? 100. : 600., input_defects);
     const bool expected = expected_failures.count(c.name) == 0;
     CHECK_MESSAGE(solved == expected, c.name << (solved ? ": solved, but listed as an expected failure" : ": not solved"));
   }

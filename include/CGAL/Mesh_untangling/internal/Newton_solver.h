@@ -4,10 +4,11 @@
 // The default inner solver: Newton steps on the positive semi-definite part
 // of the Hessian (per element, projected in Jacobian space), a sparse
 // Cholesky factorization (of the lower triangle) whose symbolic analysis is
-// done once, and an Armijo backtracking line search.  Assembly runs the
-// elements in parallel (TBB) with results independent of the thread count.  The projected Hessian is spectrally equivalent
-// to the finite element Laplacian, so a handful of steps per eps suffice
-// where a first-order method needs thousands of evaluations.
+// done once, and an Armijo backtracking line search.  The projected Hessian
+// is spectrally equivalent to the finite element Laplacian, so a handful of
+// steps per eps suffice where a first-order method needs thousands of
+// evaluations.  Assembly runs the elements in parallel (TBB) with results
+// independent of the number of threads.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
 
@@ -102,6 +103,7 @@ public:
   int number_of_free() const { return number_of_free_; }
   int free_index(std::size_t v) const { return free_index_[v]; }
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
+  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
   std::size_t number_of_colours() const { return colour_start_.size() - 1; }
   /// The elements of colour c, increasing: positions colour_start(c) to
@@ -235,7 +237,7 @@ public:
 
   /// The Hessian as last assembled: free unknowns only (vertex by vertex,
   /// `free_index`), lower triangle (and whole diagonal blocks).
-  const Eigen::SparseMatrix<double>& hessian() { return pattern_.matrix(); }
+  const Eigen::SparseMatrix<double>& hessian() const { return pattern_.matrix(); }
   int free_index(std::size_t v) const { return pattern_.free_index(v); }
 
   /// Energy, gradient (restricted to free unknowns) and the PSD Hessian.
@@ -255,6 +257,7 @@ public:
     const Simplex_energy<d> f{theta, eps};
     for(std::size_t colour = 0; colour < pattern_.number_of_colours(); ++colour) {
       const std::size_t first = pattern_.colour_start(colour), size = pattern_.colour_start(colour + 1) - first;
+      // chunks of 256 elements (an element costs about a microsecond)
       for_each_chunk(size, element_chunk_size / 2, [&](std::size_t, std::size_t begin, std::size_t end) {
         typename Simplex_energy<d>::Vertex_hessian M;
         for(std::size_t position = first + begin; position < first + end; ++position) {
