@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <utility>
 #include <filesystem>
+#include <limits>
 
 using namespace Mesh_untangling_tools;
 namespace MU = CGAL::Mesh_untangling;
@@ -104,6 +105,26 @@ int main(int argc, char** argv)
     Mesh_file cap = make_rough_cap(24, 1.9, 0.3, 0.03, 5);
     project_surface_on_best_fit_plane(cap);
     check_case("rough cap 24x24, 109°", all_free(cap));
+  }
+  // A strip rolled half-way around a cylinder: its least-squares plane is
+  // the one across the strip (the projection would collapse to a curve), so
+  // the projection takes the plane orthogonal to the total area vector.
+  {
+    Mesh_file strip = make_square_grid(16);
+    for(auto& p : strip.rest) {
+      const double angle = 3.14159265358979323846 * p[0];
+      p = {std::sin(angle), p[1], 1 - std::cos(angle)};
+    }
+    strip.rest_dimension = 3;
+    strip.map = strip.rest;
+    project_surface_on_best_fit_plane(strip);
+    double smallest = std::numeric_limits<double>::infinity();
+    for(const auto& t : strip.simplices) {
+      const auto &a = strip.map[t[0]], &b = strip.map[t[1]], &c = strip.map[t[2]];
+      smallest = std::min(smallest, std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2);
+    }
+    CHECK_MESSAGE(smallest > 1e-6, "half-rolled strip: the projection collapses triangles to area " << smallest);
+    check_case("half-rolled strip 16x16", all_free(strip), 1.05);
   }
   // Two vertices of a planar grid swapped, only those two fixed: the
   // answer is the half-turn that swaps them (a rigid motion).

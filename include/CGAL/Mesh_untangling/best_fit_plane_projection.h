@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -20,12 +21,27 @@ namespace Mesh_untangling {
 
 namespace internal {
 
+/// Sum of the absolute areas of `triangles` projected along `normal` (unit).
+inline double projected_area(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<std::array<std::size_t, 3>>& triangles, const Eigen::Vector3d& normal)
+{
+  double area = 0;
+  for(const auto& t : triangles)
+    area += std::abs((points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).dot(normal));
+  return area / 2;
+}
+
 /// Orthogonal projection of `points` on their least-squares plane, in an
 /// orthonormal frame of that plane centred on the centroid.  The frame is
 /// turned so that the plane's normal agrees with the total area vector of
 /// `triangles`: most projected triangles then keep the orientation of their
 /// faces (the one their flattened targets have), and a surface that folds
 /// over only a little starts with few inverted triangles.
+///
+/// The least-squares plane of a long strip bent across its length can be
+/// the plane across the strip, where the projection collapses to a curve;
+/// when the plane orthogonal to the total area vector shows more than twice
+/// the projected area, that plane is taken instead.
 inline std::vector<Eigen::Vector2d>
 best_fit_plane_projection(const std::vector<Eigen::Vector3d>& points,
                           const std::vector<std::array<std::size_t, 3>>& triangles)
@@ -39,11 +55,19 @@ best_fit_plane_projection(const std::vector<Eigen::Vector3d>& points,
   for(const auto& p : points) covariance += (p - centroid) * (p - centroid).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   Eigen::Vector3d normal = solver.eigenvectors().col(0);   // eigenvalues ascend: least spread
+  Eigen::Vector3d u = solver.eigenvectors().col(2);
   Eigen::Vector3d area = Eigen::Vector3d::Zero();
   for(const auto& t : triangles)
     area += (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
+  if(area.norm() > 0) {
+    const Eigen::Vector3d across = area.normalized();
+    if(projected_area(points, triangles, across) > 2 * projected_area(points, triangles, normal)) {
+      normal = across;
+      u = across.unitOrthogonal();
+    }
+  }
   if(area.dot(normal) < 0) normal = -normal;
-  const Eigen::Vector3d u = solver.eigenvectors().col(2);
+  u = (u - u.dot(normal) * normal).normalized();
   const Eigen::Vector3d v = normal.cross(u);               // (u, v, normal) is direct
   for(std::size_t i = 0; i < points.size(); ++i)
     uv[i] = Eigen::Vector2d((points[i] - centroid).dot(u), (points[i] - centroid).dot(v));
