@@ -284,20 +284,24 @@ public:
   }
 
 private:
+  /// The Newton step: H step = -g.
   bool solve(const Eigen::VectorXd& g, Eigen::VectorXd& step)
   {
     auto& H = pattern_.matrix();
+    if(!factorization_) analyze(H);
     // A tiny diagonal shift keeps the system definite when nothing pins the
-    // rigid motions (all vertices free); a failed factorization gets a larger one.
-    const double trace = H.diagonal().sum() / H.rows();
+    // rigid motions (all vertices free); a failed factorization gets a larger
+    // one.  The shift goes on H in place, and the diagonal is restored
+    // afterwards: a shifted copy of H would double its memory.
+    double* values = H.valuePtr();
+    std::vector<double> diagonal(diagonal_position_.size());
+    double trace = 0;
+    for(std::size_t i = 0; i < diagonal.size(); ++i) trace += diagonal[i] = values[diagonal_position_[i]];
+    trace /= std::max<std::size_t>(diagonal.size(), 1);
     for(double shift = 1e-10; shift < 1e2; shift *= 100) {
-      Eigen::SparseMatrix<double> A = H;
-      for(Eigen::Index i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += shift * trace;
-      if(!factorization_) {
-        factorization_ = std::make_unique<Factorization>();
-        factorization_->analyzePattern(A);
-      }
-      factorization_->factorize(A);
+      for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i] + shift * trace;
+      factorization_->factorize(H);
+      for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i];
       if(factorization_->info() != Eigen::Success) continue;
       step = factorization_->solve(-g);
       if(factorization_->info() == Eigen::Success && step.allFinite()) return true;
@@ -305,8 +309,29 @@ private:
     return false;
   }
 
+  /// Symbolic analysis, once per problem.
+  void analyze(const Eigen::SparseMatrix<double>& H)
+  {
+    diagonal_position_.resize(H.cols());
+    for(Eigen::Index j = 0; j < H.cols(); ++j) {
+      const auto* begin = H.innerIndexPtr() + H.outerIndexPtr()[j];
+      const auto* end = H.innerIndexPtr() + H.outerIndexPtr()[j + 1];
+      diagonal_position_[j] = H.outerIndexPtr()[j] + (std::lower_bound(begin, end, j) - begin);
+    }
+    factorization_ = std::make_unique<Factorization>();
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    // Let CHOLMOD keep the better of AMD and METIS: by default it tries
+    // METIS only when AMD's fill looks bad, and misses e.g. 2D grids.
+    factorization_->cholmod().nmethods = 2;
+    factorization_->cholmod().method[0].ordering = CHOLMOD_AMD;
+    factorization_->cholmod().method[1].ordering = CHOLMOD_METIS;
+#endif
+    factorization_->analyzePattern(H);
+  }
+
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
+  std::vector<Eigen::Index> diagonal_position_;   // of each diagonal entry in the values of H
   std::vector<double> element_energy_;
 };
 
