@@ -49,8 +49,11 @@ public:
     for(std::size_t v = 0; v < n; ++v)
       if(!P.is_fixed[v]) free_index_[v] = number_of_free_++;
 
-    // rows of every block column (lower triangle: rows >= column)
+    // rows of every block column (lower triangle: rows >= column); every
+    // diagonal block is stored, even that of a free vertex in no element,
+    // so that the solver can shift the diagonal in place
     std::vector<std::vector<int>> rows(number_of_free_);
+    for(int j = 0; j < number_of_free_; ++j) rows[j].push_back(j);
     for(const auto& e : P.elements)
       for(std::size_t a : e)
         for(std::size_t b : e)
@@ -210,8 +213,14 @@ public:
       if(!(slope < 0)) break;
 
       // Armijo backtracking on F(., eps), which is finite everywhere for eps > 0.
+      // The full step is nearly always accepted, and the next Newton step
+      // needs the gradient and the Hessian there: so the full step's trial is
+      // assembled at once (one pass instead of an energy pass, then an
+      // assembly).  Shorter trials, and the trials of the last step, after
+      // which nothing needs the derivatives, compute the energy alone.
+      const bool last = it + 1 == max_iterations;
       double alpha = 1, E_trial = E;
-      bool accepted = false;
+      bool accepted = false, accepted_assembled = false;
       for(int ls = 0; ls < 40 && !accepted; ++ls, alpha /= 2) {
         trial = P.x;
         for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
@@ -219,16 +228,29 @@ public:
           if(f >= 0)
             for(int c = 0; c < d; ++c) trial[d * v + c] += alpha * step[d * f + c];
         }
-        E_trial = energy<d>(P, trial.data(), eps, theta);
+        const bool assemble_trial = ls == 0 && !last;
+        if(assemble_trial) {
+          P.x.swap(trial);
+          E_trial = assemble(P, eps, theta, g);   // g and H now belong to the trial
+          P.x.swap(trial);
+        } else {
+          E_trial = energy<d>(P, trial.data(), eps, theta);
+        }
         ++stats.evaluations;
         accepted = std::isfinite(E_trial) && E_trial <= E + 1e-4 * alpha * slope;
+        accepted_assembled = accepted && assemble_trial;
       }
       if(!accepted) break;
       P.x.swap(trial);
       const double decrease = E - E_trial;
-      E = assemble(P, eps, theta, g);
-      ++stats.evaluations;
-      if(!std::isfinite(E)) { stats.finite = false; break; }
+      if(last) break;
+      if(accepted_assembled) {
+        E = E_trial;
+      } else {
+        E = assemble(P, eps, theta, g);
+        ++stats.evaluations;
+        if(!std::isfinite(E)) { stats.finite = false; break; }
+      }
       // The Newton decrement says how far the quadratic model still sees to go.
       if(decrease <= 1e-9 * std::abs(E) || -slope <= 1e-12 * std::abs(E)) break;
     }
