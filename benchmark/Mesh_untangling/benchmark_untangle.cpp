@@ -6,7 +6,7 @@
 // of one run does not stop the others.  Prints a markdown table and, per pair
 // of solvers, how many cases each solved and the median ratio of their times.
 //
-//   benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--markdown FILE] CASE...
+//   benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...
 //
 // Run with --help for the forms of CASE.
 
@@ -15,6 +15,10 @@
 
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cerrno>
@@ -30,6 +34,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <new>
 #include <sstream>
 #include <string>
@@ -50,7 +55,7 @@ using namespace Mesh_untangling_tools;
 namespace {
 
 const char* const usage_text =
-  "usage: benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--markdown FILE] CASE...\n"
+  "usage: benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...\n"
   "\n"
   "Runs the untangler on every CASE with every solver, each run in its own process,\n"
   "and prints a markdown table (stdout, and FILE with --markdown).\n"
@@ -58,6 +63,8 @@ const char* const usage_text =
   "  --solver LIST        comma-separated solvers among newton, lbfgs (default: newton,lbfgs)\n"
   "  --time-limit SECONDS time limit of one run (default: 120), passed to the untangler;\n"
   "                       a run still going 30 s past it is killed (SIGKILL)\n"
+  "  --threads N          at most N threads in the untangler's parallel loops (TBB global_control;\n"
+  "                       default: TBB's choice); results do not depend on N, the hash column shows it\n"
   "  --markdown FILE      also write the table and the summary to FILE\n"
   "\n"
   "A CASE is one of:\n"
@@ -115,8 +122,31 @@ std::string short_status(MU::Untangling_status status)
   return "unknown status";
 }
 
-void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit)
+/// FNV-1a over the bytes of the map's coordinates: equal hashes mean
+/// (barring collisions) bitwise equal results.
+std::string positions_hash(const Mesh_file& mesh)
 {
+  std::uint64_t h = 14695981039346656037ull;
+  for(const auto& p : mesh.map)
+    for(double c : p) {
+      unsigned char bytes[sizeof(double)];
+      std::memcpy(bytes, &c, sizeof c);
+      for(unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    }
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(h));
+  return buffer;
+}
+
+void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit, int threads)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> limit;
+  if(threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+#else
+  (void)threads;   // serial build: one thread whatever is asked
+#endif
   auto send = [fd](const std::string& key, const std::string& value) { write_all(fd, key + "\t" + value + "\n"); };
   try {
     Problem p = load(c);
@@ -140,6 +170,7 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     send("evaluations", std::to_string(result.energy_evaluations));
     send("status", short_status(result.status));
     send("status_success", result.status == MU::Untangling_status::SUCCESS ? "1" : "0");
+    send("hash", positions_hash(p.mesh));
 
     const Verdict after = check_mesh_file(p.mesh, p.is_fixed);
     send("inverted_after", std::to_string(after.inverted));
@@ -210,7 +241,7 @@ void parse_child_output(const std::string& text, Row& row)
 // killed this long after the limit.
 constexpr double kill_margin_seconds = 30;
 
-Row run_case(const Case_spec& c, const std::string& solver, double time_limit)
+Row run_case(const Case_spec& c, const std::string& solver, double time_limit, int threads)
 {
   Row row;
   row.case_name = c.name;
@@ -234,7 +265,7 @@ Row run_case(const Case_spec& c, const std::string& solver, double time_limit)
   }
   if(pid == 0) {
     ::close(fds[0]);
-    child_run(fds[1], c, solver, time_limit);
+    child_run(fds[1], c, solver, time_limit, threads);
     ::close(fds[1]);
     ::_exit(0);   // no destructor, no flush of the parent's buffers
   }
@@ -324,13 +355,14 @@ std::string table(const std::vector<Row>& rows)
 {
   const std::vector<std::string> header = {"case", "#vertices", "#elements", "#fixed", "solver",
                                            "inverted before", "inverted after", "input defects", "success",
-                                           "seconds", "eps steps", "energy evaluations", "peak memory (MiB)"};
+                                           "seconds", "eps steps", "energy evaluations", "peak memory (MiB)",
+                                           "result hash"};
   std::vector<std::vector<std::string>> cells;
   for(const Row& r : rows) {
     cells.push_back({r.case_name, r.get("vertices"), r.get("elements"), r.get("fixed"), r.solver,
                      r.get("inverted_before"), r.get("inverted_after"), r.get("input_defects"), r.outcome,
                      r.has("seconds") ? format_seconds(r.seconds()) : "—", r.get("eps_steps"),
-                     r.get("evaluations"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—"});
+                     r.get("evaluations"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—", r.get("hash")});
     for(std::string& cell : cells.back()) cell = escape_cell(cell);
   }
   std::vector<std::size_t> width(header.size());
@@ -339,7 +371,7 @@ std::string table(const std::vector<Row>& rows)
     for(const auto& line : cells) width[k] = std::max(width[k], display_width(line[k]));
   }
   // numbers right-aligned, text left-aligned
-  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8; };
+  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8 && k != 13; };
   std::ostringstream out;
   auto print_line = [&](const std::vector<std::string>& line) {
     out << "|";
@@ -418,6 +450,7 @@ struct Arguments
 {
   std::vector<std::string> solvers = {"newton", "lbfgs"};
   double time_limit = 120;
+  int threads = 0;   // 0: TBB's default
   std::string markdown;
   std::vector<Case_spec> cases;
 };
@@ -444,7 +477,7 @@ Arguments parse_arguments(int argc, char** argv)
       name = argument.substr(0, equal);
       value = argument.substr(equal + 1);
     }
-    if(name != "--solver" && name != "--time-limit" && name != "--markdown")
+    if(name != "--solver" && name != "--time-limit" && name != "--threads" && name != "--markdown")
       throw Usage_error{"unknown option '" + name + "'"};
     if(equal == std::string::npos) {
       if(i + 1 >= argc) throw Usage_error{name + " needs a value"};
@@ -461,6 +494,11 @@ Arguments parse_arguments(int argc, char** argv)
     } else if(name == "--time-limit") {
       if(!parse_number(value, a.time_limit) || !(a.time_limit > 0))
         throw Usage_error{"--time-limit: '" + value + "' is not a positive number of seconds"};
+    } else if(name == "--threads") {
+      double threads = 0;
+      if(!parse_number(value, threads) || !(threads >= 1) || threads != std::floor(threads) || threads > 4096)
+        throw Usage_error{"--threads: '" + value + "' is not a number of threads"};
+      a.threads = static_cast<int>(threads);
     } else {
       if(value.empty()) throw Usage_error{"--markdown needs a file name"};
       a.markdown = value;
@@ -500,7 +538,7 @@ int main(int argc, char** argv)
     for(const std::string& solver : arguments.solvers) {
       const std::string label = "[" + std::to_string(++index) + "/" + std::to_string(total) + "] " + c.name + " " + solver;
       std::cerr << label << ": started" << std::endl;
-      rows.push_back(run_case(c, solver, arguments.time_limit));
+      rows.push_back(run_case(c, solver, arguments.time_limit, arguments.threads));
       const Row& r = rows.back();
       std::cerr << label << ": " << (r.success ? "success" : r.outcome) << ", "
                 << (r.has("seconds") ? format_seconds(r.seconds()) + " s untangling, " : std::string())
@@ -509,10 +547,12 @@ int main(int argc, char** argv)
     }
 
   std::ostringstream report;
-  report << "Time limit " << format_plain(arguments.time_limit) << " s per run (killed at "
+  report << (arguments.threads > 0 ? "At most " + std::to_string(arguments.threads) + " thread(s). " : std::string())
+         << "Time limit " << format_plain(arguments.time_limit) << " s per run (killed at "
          << format_plain(arguments.time_limit + kill_margin_seconds) << " s). inverted before/after: elements inverted "
          << "relative to their rest element (exact predicates); success: the result is locally invertible "
-         << "(check) and the untangler reports success; seconds: the untangling call alone.\n\n"
+         << "(check) and the untangler reports success; seconds: the untangling call alone; result hash: "
+         << "FNV-1a of the resulting coordinates' bytes.\n\n"
          << table(rows) << summary(rows, arguments.cases, arguments.solvers);
   std::cout << report.str() << std::flush;
   if(markdown.is_open()) {

@@ -49,8 +49,11 @@ public:
     for(std::size_t v = 0; v < n; ++v)
       if(!P.is_fixed[v]) free_index_[v] = number_of_free_++;
 
-    // rows of every block column (lower triangle: rows >= column)
+    // rows of every block column (lower triangle: rows >= column); every
+    // diagonal block is stored, even that of a free vertex in no element,
+    // so that the solver can shift the diagonal in place
     std::vector<std::vector<int>> rows(number_of_free_);
+    for(int j = 0; j < number_of_free_; ++j) rows[j].push_back(j);
     for(const auto& e : P.elements)
       for(std::size_t a : e)
         for(std::size_t b : e)
@@ -210,8 +213,14 @@ public:
       if(!(slope < 0)) break;
 
       // Armijo backtracking on F(., eps), which is finite everywhere for eps > 0.
+      // The full step is nearly always accepted, and the next Newton step
+      // needs the gradient and the Hessian there: so the full step's trial is
+      // assembled at once (one pass instead of an energy pass, then an
+      // assembly).  Shorter trials, and the trials of the last step, after
+      // which nothing needs the derivatives, compute the energy alone.
+      const bool last = it + 1 == max_iterations;
       double alpha = 1, E_trial = E;
-      bool accepted = false;
+      bool accepted = false, accepted_assembled = false;
       for(int ls = 0; ls < 40 && !accepted; ++ls, alpha /= 2) {
         trial = P.x;
         for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
@@ -219,16 +228,29 @@ public:
           if(f >= 0)
             for(int c = 0; c < d; ++c) trial[d * v + c] += alpha * step[d * f + c];
         }
-        E_trial = energy<d>(P, trial.data(), eps, theta);
+        const bool assemble_trial = ls == 0 && !last;
+        if(assemble_trial) {
+          P.x.swap(trial);
+          E_trial = assemble(P, eps, theta, g);   // g and H now belong to the trial
+          P.x.swap(trial);
+        } else {
+          E_trial = energy<d>(P, trial.data(), eps, theta);
+        }
         ++stats.evaluations;
         accepted = std::isfinite(E_trial) && E_trial <= E + 1e-4 * alpha * slope;
+        accepted_assembled = accepted && assemble_trial;
       }
       if(!accepted) break;
       P.x.swap(trial);
       const double decrease = E - E_trial;
-      E = assemble(P, eps, theta, g);
-      ++stats.evaluations;
-      if(!std::isfinite(E)) { stats.finite = false; break; }
+      if(last) break;
+      if(accepted_assembled) {
+        E = E_trial;
+      } else {
+        E = assemble(P, eps, theta, g);
+        ++stats.evaluations;
+        if(!std::isfinite(E)) { stats.finite = false; break; }
+      }
       // The Newton decrement says how far the quadratic model still sees to go.
       if(decrease <= 1e-9 * std::abs(E) || -slope <= 1e-12 * std::abs(E)) break;
     }
@@ -284,20 +306,24 @@ public:
   }
 
 private:
+  /// The Newton step: H step = -g.
   bool solve(const Eigen::VectorXd& g, Eigen::VectorXd& step)
   {
     auto& H = pattern_.matrix();
+    if(!factorization_) analyze(H);
     // A tiny diagonal shift keeps the system definite when nothing pins the
-    // rigid motions (all vertices free); a failed factorization gets a larger one.
-    const double trace = H.diagonal().sum() / H.rows();
+    // rigid motions (all vertices free); a failed factorization gets a larger
+    // one.  The shift goes on H in place, and the diagonal is restored
+    // afterwards: a shifted copy of H would double its memory.
+    double* values = H.valuePtr();
+    std::vector<double> diagonal(diagonal_position_.size());
+    double trace = 0;
+    for(std::size_t i = 0; i < diagonal.size(); ++i) trace += diagonal[i] = values[diagonal_position_[i]];
+    trace /= std::max<std::size_t>(diagonal.size(), 1);
     for(double shift = 1e-10; shift < 1e2; shift *= 100) {
-      Eigen::SparseMatrix<double> A = H;
-      for(Eigen::Index i = 0; i < A.rows(); ++i) A.coeffRef(i, i) += shift * trace;
-      if(!factorization_) {
-        factorization_ = std::make_unique<Factorization>();
-        factorization_->analyzePattern(A);
-      }
-      factorization_->factorize(A);
+      for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i] + shift * trace;
+      factorization_->factorize(H);
+      for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i];
       if(factorization_->info() != Eigen::Success) continue;
       step = factorization_->solve(-g);
       if(factorization_->info() == Eigen::Success && step.allFinite()) return true;
@@ -305,8 +331,29 @@ private:
     return false;
   }
 
+  /// Symbolic analysis, once per problem.
+  void analyze(const Eigen::SparseMatrix<double>& H)
+  {
+    diagonal_position_.resize(H.cols());
+    for(Eigen::Index j = 0; j < H.cols(); ++j) {
+      const auto* begin = H.innerIndexPtr() + H.outerIndexPtr()[j];
+      const auto* end = H.innerIndexPtr() + H.outerIndexPtr()[j + 1];
+      diagonal_position_[j] = H.outerIndexPtr()[j] + (std::lower_bound(begin, end, j) - begin);
+    }
+    factorization_ = std::make_unique<Factorization>();
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    // Let CHOLMOD keep the better of AMD and METIS: by default it tries
+    // METIS only when AMD's fill looks bad, and misses e.g. 2D grids.
+    factorization_->cholmod().nmethods = 2;
+    factorization_->cholmod().method[0].ordering = CHOLMOD_AMD;
+    factorization_->cholmod().method[1].ordering = CHOLMOD_METIS;
+#endif
+    factorization_->analyzePattern(H);
+  }
+
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
+  std::vector<Eigen::Index> diagonal_position_;   // of each diagonal entry in the values of H
   std::vector<double> element_energy_;
 };
 

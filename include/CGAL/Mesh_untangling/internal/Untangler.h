@@ -107,7 +107,7 @@ public:
     std::unique_ptr<Newton_solver<d>> newton;
     if(options_.solver == Solver::NEWTON) newton = std::make_unique<Newton_solver<d>>(P);
     const int max_inner = options_.max_inner_iterations >= 0 ? options_.max_inner_iterations
-                          : (options_.solver == Solver::NEWTON ? 3 : 10000);
+                          : (options_.solver == Solver::NEWTON ? 3 : published_inner_iterations<d>());
     auto summary = determinant_summary(P, P.x.data());
     double eps = initial_epsilon(summary.min_det);
     std::size_t best = summary.non_positive, since_best = 0;
