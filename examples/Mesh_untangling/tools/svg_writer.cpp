@@ -237,6 +237,15 @@ void legend(std::ostream& out, double left, double top, bool computed_distortion
 
 Svg_counts write_svg(const std::string& path, const Svg_map& map)
 {
+  check(map);   // before the file is created
+  CGAL::Mesh_untangling::IO::internal::Atomic_output_file file(path);
+  const Svg_counts counts = write_svg(file.stream(), map);
+  file.commit();
+  return counts;
+}
+
+Svg_counts write_svg(std::ostream& out, const Svg_map& map)
+{
   check(map);
   Svg_counts counts;
   counts.triangles = map.triangles.size();
@@ -268,8 +277,8 @@ Svg_counts write_svg(const std::string& path, const Svg_map& map)
     map.triangles.empty() ? 0. : (frame.width * frame.height + 1.) / double(map.triangles.size());
   const bool grey_edges = pixels_per_triangle > 60;
 
-  CGAL::Mesh_untangling::IO::internal::Atomic_output_file file(path);
-  std::ostream& out = file.stream();
+  const auto flags = out.flags();
+  const auto precision = out.precision();
   out << std::fixed << std::setprecision(2);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
@@ -342,7 +351,8 @@ Svg_counts write_svg(const std::string& path, const Svg_map& map)
 
   legend(out, margin, title_height + frame.height + 2 * margin, map.distortion.empty(), !map.overlay.empty());
   out << "</svg>\n";
-  file.commit();
+  out.flags(flags);
+  out.precision(precision);
   return counts;
 }
 

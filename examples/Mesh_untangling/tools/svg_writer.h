@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstddef>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,9 @@ struct Svg_error : std::runtime_error { using std::runtime_error::runtime_error;
 /// Writes the picture to `path` whole, or not at all (throws Svg_error on a
 /// bad map, CGAL::Mesh_untangling::IO::Write_error when the file cannot be written).
 Svg_counts write_svg(const std::string& path, const Svg_map& map);
+
+/// Writes the picture to `out` (throws Svg_error, having written nothing, on a bad map).
+Svg_counts write_svg(std::ostream& out, const Svg_map& map);
 
 } // namespace Mesh_untangling_tools
 
