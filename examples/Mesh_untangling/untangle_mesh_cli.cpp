@@ -86,7 +86,8 @@ void check_output_paths(const Arguments& args)
   }
   if(!args.report.empty() && same_file(args.report, args.output))
     throw Usage_error(args.report + ": the report and the result would be the same file");
-  const std::pair<const char*, const std::string*> pictures[] = {{"--svg", &args.svg}, {"--svg-input", &args.svg_input}};
+  const std::pair<const char*, const std::string*> pictures[] = {
+    {"--svg", &args.svg}, {"--svg-input", &args.svg_input}};
   for(const auto& picture : pictures) {
     const std::string& path = *picture.second;
     if(path.empty()) continue;

@@ -29,7 +29,7 @@
 ///
 /// The tests are exact (CGAL's filtered predicates on the double
 /// coordinates), after a bounding-box filter (`CGAL::box_self_intersection_d`),
-/// so they run in about O(n log² n + k) for n boundary facets and k box overlaps.
+/// so they run in O(n log^D n + k) for n boundary facets and k overlapping boxes.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bbox_2.h>
@@ -66,7 +66,8 @@ struct Boundary_self_intersection_report
   /// vertices explain: crossing, touching or overlapping
   std::size_t number_of_intersecting_pairs = 0;
 
-  /// at most `max_recorded_pairs` of the intersecting pairs (all when they fit), each with the smaller facet first, sorted
+  /// at most `max_recorded_pairs` of the intersecting pairs (all when they
+  /// fit), each with the smaller facet first, sorted
   std::vector<std::pair<Facet, Facet>> intersecting_pairs;
   /// 2D only, one per recorded pair: where the two edges meet (the middle of
   /// their common part when they overlap), rounded; for drawing, not for decisions
@@ -209,10 +210,12 @@ inline bool triangles_intersect(const std::vector<std::array<double, 3>>& positi
   }
 }
 
-inline bool is_degenerate_facet(const std::vector<std::array<double, 2>>& positions, const std::array<std::size_t, 2>& f)
+inline bool is_degenerate_facet(const std::vector<std::array<double, 2>>& positions,
+                                const std::array<std::size_t, 2>& f)
 { return point_of(positions[f[0]]) == point_of(positions[f[1]]); }
 
-inline bool is_degenerate_facet(const std::vector<std::array<double, 3>>& positions, const std::array<std::size_t, 3>& f)
+inline bool is_degenerate_facet(const std::vector<std::array<double, 3>>& positions,
+                                const std::array<std::size_t, 3>& f)
 { return CGAL::collinear(point_of(positions[f[0]]), point_of(positions[f[1]]), point_of(positions[f[2]])); }
 
 } // namespace internal
