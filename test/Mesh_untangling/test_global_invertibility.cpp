@@ -275,6 +275,23 @@ static void test_cube()
   CHECK(!r_flat.is_simple());
 }
 
+/// The boundary facets are those of one simplex exactly, listed sorted with sorted ids.
+static void test_boundary_facets()
+{
+  using Face = std::array<std::size_t, 3>;
+  // Two tets glued along {1,2,3}; vertex ids need not be contiguous.
+  const Tets glued = {{10, 1, 2, 3}, {3, 2, 1, 40}};
+  CHECK((MU::boundary_facets<4>(glued) ==
+         std::vector<Face>{{1, 2, 10}, {1, 2, 40}, {1, 3, 10}, {1, 3, 40}, {2, 3, 10}, {2, 3, 40}}));
+  // A third tet on the same face: {1,2,3} is shared by three, still not boundary.
+  const Tets three = {{0, 1, 2, 3}, {1, 2, 3, 4}, {1, 2, 3, 5}};
+  CHECK(MU::boundary_facets<4>(three).size() == 9);
+  // Triangles: an edge of one triangle only; a fan of three around vertex 0.
+  const Triangles fan = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}};
+  CHECK((MU::boundary_facets<3>(fan) == std::vector<Edge>{{1, 2}, {1, 3}, {2, 3}}));
+  CHECK(MU::boundary_facets<3>(Triangles{}).empty());
+}
+
 /// Hand-made pairs of boundary triangles for each case of the shared-vertex analysis.
 static void test_triangle_pairs()
 {
@@ -345,6 +362,7 @@ int main(int argc, char** argv)
   test_degenerate_edge();
   test_filter_against_all_pairs_2();
   test_cube();
+  test_boundary_facets();
   test_triangle_pairs();
   test_filter_against_all_pairs_3();
   test_data(test::data_dir(argc, argv, "the shared free-boundary maps"));

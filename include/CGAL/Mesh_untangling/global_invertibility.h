@@ -100,7 +100,26 @@ facet_incidences(const std::vector<std::array<std::size_t, N>>& simplices)
       std::sort(f.begin(), f.end());
       facets.push_back(f);
     }
-  std::sort(facets.begin(), facets.end());
+  // Sorted by a counting sort on the smallest vertex, then within each
+  // (small) bucket: linear in practice, where one global sort was the bulk of
+  // the running time on large meshes.
+  std::size_t number_of_vertices = 0;
+  for(const Facet& f : facets)
+    number_of_vertices = (std::max)(number_of_vertices, f[0] + 1);
+  std::vector<std::size_t> offsets(number_of_vertices + 1, 0);
+  for(const Facet& f : facets)
+    ++offsets[f[0] + 1];
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+    offsets[v + 1] += offsets[v];
+  std::vector<Facet> bucketed(facets.size());
+  {
+    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+    for(const Facet& f : facets)
+      bucketed[fill[f[0]]++] = f;
+  }
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+    std::sort(bucketed.begin() + offsets[v], bucketed.begin() + offsets[v + 1]);
+  facets = std::move(bucketed);
   std::vector<std::pair<Facet, std::size_t>> counted;
   for(std::size_t first = 0, last = 0; first < facets.size(); first = last) {
     for(last = first; last < facets.size() && facets[last] == facets[first]; ++last) {}
