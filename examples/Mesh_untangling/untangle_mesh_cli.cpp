@@ -31,6 +31,7 @@ namespace {
 struct Arguments
 {
   std::string input, rest, fixed, output, report, solver = "newton", init = "given";
+  std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   bool fix_boundary = false, quiet = false, no_phantoms = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
@@ -71,7 +72,7 @@ void check_output_paths(const Arguments& args)
                       "' (supported: .obj .off .vtk .mesh .input)");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
-  for(const std::string* output : {&args.output, &args.report}) {
+  for(const std::string* output : {&args.output, &args.report, &args.svg, &args.svg_input}) {
     if(output->empty()) continue;
     for(const auto& in : inputs)
       if(!in.second->empty() && same_file(*in.second, *output))
@@ -85,6 +86,28 @@ void check_output_paths(const Arguments& args)
   }
   if(!args.report.empty() && same_file(args.report, args.output))
     throw Usage_error(args.report + ": the report and the result would be the same file");
+  const std::pair<const char*, const std::string*> pictures[] = {
+    {"--svg", &args.svg}, {"--svg-input", &args.svg_input}};
+  for(const auto& picture : pictures) {
+    const std::string& path = *picture.second;
+    if(path.empty()) continue;
+    if(lowercase_extension(path) != ".svg")
+      throw Usage_error(path + ": " + picture.first + " writes an SVG picture: give a .svg file");
+    if(same_file(path, args.output) || (!args.report.empty() && same_file(path, args.report)))
+      throw Usage_error(path + ": " + picture.first + " would overwrite the " +
+                        (same_file(path, args.output) ? "result" : "report"));
+  }
+  if(!args.svg.empty() && !args.svg_input.empty() && same_file(args.svg, args.svg_input))
+    throw Usage_error(args.svg + ": --svg and --svg-input would be the same file");
+}
+
+/// Pictures are drawn for 2D maps only.
+void check_pictures(const Arguments& args, const Mesh_file& mesh)
+{
+  for(const std::string* path : {&args.svg, &args.svg_input})
+    if(!path->empty() && mesh.simplex_size != 3)
+      throw Usage_error(*path + ": SVG pictures are drawn for 2D maps (triangles) only; " + args.input +
+                        " holds tetrahedra (write .vtk and open it in ParaView)");
 }
 
 /// The map to untangle, with its rest geometry, as the file formats give it.
@@ -169,8 +192,16 @@ Mesh_file as_written(const Mesh_file& mesh, const std::string& output)
   return checked;
 }
 
+/// The figures of the map before and after untangling that the report adds
+/// to those of the untangler: windings and the global-invertibility check.
+struct Checks
+{
+  Verdict before;
+  Boundary_verdict boundary_before, boundary_after;
+};
+
 void write_report(IO::internal::Atomic_output_file& file, const Arguments& args, const std::string& fixed_source,
-                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v)
+                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v, const Checks& c)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -197,6 +228,19 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["overwound_edges"] = v.overwound_edges;
   j["input_defects"] = v.input_defects;
   j["non_manifold_stars"] = v.non_manifold;
+  j["overwound_vertices_before"] = c.before.overwound_vertices;
+  j["overwound_edges_before"] = c.before.overwound_edges;
+  j["overwound_interior_vertices"] = v.overwound_interior_vertices;
+  j["overwound_boundary_vertices"] = v.overwound_boundary_vertices;
+  j["overwound_interior_edges"] = v.overwound_interior_edges;
+  j["overwound_boundary_edges"] = v.overwound_boundary_edges;
+  j["min_covering"] = v.min_covering;
+  j["max_covering"] = v.max_covering;
+  j["max_boundary_covering"] = v.max_boundary_covering;
+  j["boundary_facets"] = c.boundary_after.boundary_facets;
+  j["boundary_self_intersections_before"] = c.boundary_before.intersecting_pairs;
+  j["boundary_self_intersections_after"] = c.boundary_after.intersecting_pairs;
+  j["degenerate_boundary_facets_after"] = c.boundary_after.degenerate_facets;
   j["min_scaled_det_before"] = r.min_scaled_det_before;
   j["min_scaled_det_after"] = r.min_scaled_det_after;
   j["max_shape_distortion"] = r.max_shape_distortion;
@@ -224,6 +268,7 @@ int run(const Arguments& args)
   std::string fixed_source;
   const std::vector<bool> fixed = fixed_vertices(args, mesh, fixed_source);
   check_output_format(args.output, mesh);
+  check_pictures(args, mesh);
 
   Run_options options;
   options.solver = args.solver;
@@ -237,21 +282,47 @@ int run(const Arguments& args)
                    s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds,
                    s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "");
     };
+  Checks checks;
+  checks.before = check_mesh_file(mesh, fixed);
+  checks.boundary_before = check_boundary_of_mesh_file(mesh);
+  std::optional<Svg_map> input_picture;
+  if(!args.svg_input.empty()) {
+    input_picture = svg_map_of(mesh, fixed);
+    input_picture->title = args.input + " (input)";
+  }
   const MU::Untangling_result result = untangle_mesh_file(mesh, fixed, options);
 
-  // The report's temporary file is opened first: if it cannot be created,
-  // nothing is written at all.
-  std::optional<IO::internal::Atomic_output_file> report;
+  // The temporary files of the report and the pictures are opened first: if
+  // one cannot be created, nothing is written at all.
+  std::optional<IO::internal::Atomic_output_file> report, svg, svg_input;
   if(!args.report.empty()) report.emplace(args.report);
+  if(!args.svg.empty()) svg.emplace(args.svg);
+  if(!args.svg_input.empty()) svg_input.emplace(args.svg_input);
   IO::write_mesh_file(args.output, output_content(mesh, args.output));
-  const Verdict verdict = check_mesh_file(as_written(mesh, args.output), fixed);
-  if(report) write_report(*report, args, fixed_source, mesh, result, verdict);
+  const Mesh_file written = as_written(mesh, args.output);
+  const Verdict verdict = check_mesh_file(written, fixed);
+  checks.boundary_after = check_boundary_of_mesh_file(written);
+  if(svg_input) {
+    write_svg(svg_input->stream(), *input_picture);
+    svg_input->commit();
+  }
+  if(svg) {
+    Svg_map picture = svg_map_of(written, fixed);
+    picture.title = args.output + " (result, as written)";
+    write_svg(svg->stream(), picture);
+    svg->commit();
+  }
+  if(report) write_report(*report, args, fixed_source, mesh, result, verdict, checks);
 
   if(!args.quiet)
     std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, "
                  "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
                  result.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
                  verdict.input_defects, result.number_of_phantom_elements, result.seconds);
+  if(!args.quiet)
+    std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
+                 mesh.simplex_size == 3 ? "edges" : "triangles", checks.boundary_before.intersecting_pairs,
+                 checks.boundary_after.intersecting_pairs);
   return verdict.locally_invertible ? 0 : 1;
 }
 
@@ -279,6 +350,9 @@ int main(int argc, char** argv)
     ->check(CLI::IsMember({"given", "project"}));
   app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (the published scheme: "
                "no inverted element, but stars may be covered twice)");
+  app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
+                 "triangles red, over-wound vertices circled, boundary crossings marked");
+  app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");
   app.add_flag("-q,--quiet", args.quiet, "no progress on stderr");
   try {
     app.parse(argc, argv);
@@ -297,6 +371,8 @@ int main(int argc, char** argv)
     std::cerr << "untangle_mesh: error: " << e.what() << "\n";
   } catch(const Invalid_problem& e) {
     std::cerr << "untangle_mesh: error: " << args.input << ": " << e.what() << "\n";
+  } catch(const Svg_error& e) {
+    std::cerr << "untangle_mesh: error: " << e.what() << "\n";
   } catch(const Usage_error& e) {
     std::cerr << "untangle_mesh: error: " << e.what() << "\n";
   } catch(const std::bad_alloc&) {

@@ -176,6 +176,34 @@ check "--solver lbfgs: small square was tangled" json_positive lbfgs.json invert
 check "--solver lbfgs: inverted_after 0" json_is lbfgs.json inverted_after 0
 check "--solver lbfgs: handles unchanged" [ "$(handle_rows small.input)" = "$(handle_rows lbfgs.input)" ]
 
+# --svg and --svg-input: pictures of a 2D map, written whole. The input
+# picture shows the tangled triangles in red, the result none; the report
+# carries the windings and the boundary self-intersections before and after.
+svg_count() { grep -o "$2" "$1" | wc -l | tr -d ' '; }
+svg_whole() { head -n 1 "$1" | grep -q '^<?xml' && [ "$(tail -n 1 "$1")" = '</svg>' ]; }
+run svg small.input -o svg.input --svg svg_out.svg --svg-input svg_in.svg --report svg.json -q
+check "--svg: exit 0" rc_is svg 0
+check "--svg: result picture written whole" svg_whole svg_out.svg
+check "--svg-input: input picture written whole" svg_whole svg_in.svg
+check "--svg-input: red triangles = inverted_before" \
+  [ "$(svg_count svg_in.svg '<polygon class="inverted"')" = "$(json_get svg.json inverted_before)" ]
+check "--svg-input: some red triangles" [ "$(svg_count svg_in.svg '<polygon class="inverted"')" -gt 0 ]
+check "--svg-input: circled vertices = overwound_vertices_before" \
+  [ "$(svg_count svg_in.svg '<circle class="overwound"')" = "$(json_get svg.json overwound_vertices_before)" ]
+check "--svg: no red triangle in the result" [ "$(svg_count svg_out.svg '<polygon class="inverted"')" = 0 ]
+check "--svg: 288 triangles drawn" [ "$(svg_count svg_out.svg '<polygon class="triangle"')" = 288 ]
+check "--svg: no circled vertex in the result" [ "$(svg_count svg_out.svg '<circle class="overwound"')" = 0 ]
+check "--svg: title names the result" grep -q '>svg.input (result, as written)</text>' svg_out.svg
+check "--svg: no temporary file left" [ -z "$(ls | grep '\.tmp$')" ]
+check "--svg: report overwound_vertices_before > 0" json_positive svg.json overwound_vertices_before
+check "--svg: report overwound_interior_vertices 0" json_is svg.json overwound_interior_vertices 0
+check "--svg: report overwound_boundary_vertices 0" json_is svg.json overwound_boundary_vertices 0
+check "--svg: report boundary_facets 48" json_is svg.json boundary_facets 48
+check "--svg: report boundary_self_intersections_before 0" json_is svg.json boundary_self_intersections_before 0
+check "--svg: report boundary_self_intersections_after 0" json_is svg.json boundary_self_intersections_after 0
+run svg_loud small.input -o svg_loud.input --svg svg_loud.svg
+check "--svg: boundary line on stderr" err_has svg_loud '^boundary self-intersections \(pairs of boundary edges\): 0 -> 0$'
+
 # --fix-boundary on an OBJ (v = domain, vt = map).
 run fixb square10.obj --fix-boundary --report fixb.json -q
 check "--fix-boundary obj: exit 0" rc_is fixb 0
@@ -212,6 +240,12 @@ check "cube: fixed_vertices 386" json_is cube.json fixed_vertices 386
 check "cube: dimension 3" json_is cube.json dimension 3
 check "cube: handles unchanged" [ "$(handle_rows cube.input)" = "$(handle_rows cube-untangled.input)" ]
 check "cube: 386 handle rows compared" [ "$(handle_rows cube.input | wc -l)" = 386 ]
+check "cube: boundary_facets 768" json_is cube.json boundary_facets 768
+check "cube: boundary_self_intersections_before 0" json_is cube.json boundary_self_intersections_before 0
+check "cube: boundary_self_intersections_after 0" json_is cube.json boundary_self_intersections_after 0
+check "cube: overwound_interior_edges 0" json_is cube.json overwound_interior_edges 0
+check "cube: overwound_boundary_edges 0" json_is cube.json overwound_boundary_edges 0
+check "cube: max_covering reported" [ -n "$(json_get cube.json max_covering)" ]
 run cube_vtk small3d.input -o cube.vtk --report cube_vtk.json -q
 check "cube -o .vtk: exit 0" rc_is cube_vtk 0
 check "cube -o .vtk: small cube was tangled" json_positive cube_vtk.json inverted_before
@@ -258,6 +292,11 @@ check "unsolvable: inverted_after > 0" json_positive mirror.json inverted_after
 check "unsolvable: 20 steps" json_is mirror.json outer_iterations 20
 check "unsolvable: says NOT locally invertible" err_has mirror '^NOT locally invertible'
 check "unsolvable: handles unchanged" [ "$(handle_rows mirror.input)" = "$(handle_rows mirror-untangled.input)" ]
+run mirror_svg mirror.input --max-iterations 20 -o mirror_svg.input --svg mirror.svg --report mirror_svg.json -q
+check "unsolvable --svg: exit 1" rc_is mirror_svg 1
+check "unsolvable --svg: picture written whole" svg_whole mirror.svg
+check "unsolvable --svg: red triangles = inverted_after" \
+  [ "$(svg_count mirror.svg '<polygon class="inverted"')" = "$(json_get mirror_svg.json inverted_after)" ]
 run mirror_time mirror.input --time-limit 0 -o mirror_time.vtk --report mirror_time.json -q
 check "--time-limit 0: exit 1" rc_is mirror_time 1
 check "--time-limit 0: one step" json_is mirror_time.json outer_iterations 1
@@ -309,6 +348,22 @@ fails report_dir_missing "nodir/r\\.json: directory 'nodir' does not exist" squa
 fails report_is_output 'same file' square.input -o r.vtk --report r.vtk
 fails tets_to_obj 'c\.obj: tetrahedra cannot be written as \.obj' cube.input -o c.obj
 fails tets_to_off 'c\.off: tetrahedra cannot be written as \.off' c3.vtk -o c.off
+
+# Pictures: 2D maps only, .svg files, never over another file of the run.
+fails svg_tets 'c\.svg: SVG pictures are drawn for 2D maps \(triangles\) only; c3\.vtk holds tetrahedra' c3.vtk -o c.vtk --svg c.svg
+fails svg_input_tets 'ci\.svg: SVG pictures are drawn for 2D maps' cube.input -o c.vtk --svg-input ci.svg
+fails svg_dir_missing "nodir/p\.svg: directory 'nodir' does not exist" square.input --svg nodir/p.svg
+fails svg_input_dir_missing "nodir/p\.svg: directory 'nodir' does not exist" square.input --svg-input nodir/p.svg
+fails svg_not_svg 'p\.png: --svg writes an SVG picture: give a \.svg file' square.input --svg p.png
+fails svg_input_not_svg 'p\.vtk: --svg-input writes an SVG picture' square.input --svg-input p.vtk
+fails svg_is_input 'square\.input: refusing to overwrite the input' square.input --svg square.input
+fails svg_is_report 'p\.svg: --svg would overwrite the report' square.input --svg p.svg --report p.svg
+fails svg_twice 'p\.svg: --svg and --svg-input would be the same file' square.input --svg p.svg --svg-input ./p.svg
+mkdir folder.svg
+fails svg_is_directory 'folder\.svg: is a directory' square.input --svg folder.svg
+rmdir folder.svg
+head -n 20 square.input > svg_trunc.input
+fails svg_bad_input 'svg_trunc\.input:20: truncated' svg_trunc.input --svg p.svg --svg-input q.svg
 
 # Input never overwritten.
 sum_before=$(cksum < square.input)
@@ -459,6 +514,25 @@ if [ -n "$DATA" ] && [ -d "$DATA/tlc-format" ]; then
     check "$name: handles unchanged" [ "$(handle_rows "$file")" = "$(handle_rows "$name-out.input")" ]
     check "$name: data file unchanged" [ "$(cksum < "$file")" = "$sum_before" ]
   done
+  # A free-boundary map whose boundary crosses itself 900 times (the data
+  # README): the input picture marks every crossing; the result is drawn and
+  # reported whatever the untangler makes of it.
+  file="$DATA/tlc-format/sea-free51.input"
+  if [ -f "$file" ]; then
+    run sea "$file" -o sea-out.input --svg sea.svg --svg-input sea-in.svg --report sea.json -q
+    check "sea-free51 --svg: exit 0 or 1" grep -qx "[01]" sea.rc
+    check "sea-free51: boundary_self_intersections_before 900" json_is sea.json boundary_self_intersections_before 900
+    check "sea-free51: 900 crossings in the input picture" [ "$(svg_count sea-in.svg '<g class="crossing"')" = 900 ]
+    check "sea-free51: input picture has no red triangle" [ "$(svg_count sea-in.svg '<polygon class="inverted"')" = 0 ]
+    check "sea-free51: input picture circles the over-wound vertex" \
+      [ "$(svg_count sea-in.svg '<circle class="overwound"')" = 1 ]
+    check "sea-free51: result crossings as reported" \
+      [ "$(svg_count sea.svg '<g class="crossing"')" = "$(json_get sea.json boundary_self_intersections_after)" ]
+    check "sea-free51: result circles as reported" \
+      [ "$(svg_count sea.svg '<circle class="overwound"')" = "$(json_get sea.json overwound_vertices)" ]
+  else
+    echo "SKIPPED: $file is absent"
+  fi
 else
   echo "SKIPPED: real data (no tlc-format/ in '${DATA}')"
 fi

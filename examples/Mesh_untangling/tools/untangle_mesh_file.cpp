@@ -5,6 +5,7 @@
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/internal/Untangler.h>
 #include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
+#include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
 namespace Mesh_untangling_tools {
@@ -111,6 +112,25 @@ Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
   v.input_defects = report.input_defects;
   v.non_manifold = report.non_manifold;
   v.locally_invertible = report.is_locally_invertible();
+  v.overwound_interior_vertices = report.overwound_interior_vertices;
+  v.overwound_boundary_vertices = report.overwound_boundary_vertices;
+  v.overwound_interior_edges = report.overwound_interior_edges;
+  v.overwound_boundary_edges = report.overwound_boundary_edges;
+  v.min_covering = report.min_covering;
+  v.max_covering = report.max_covering;
+  v.max_boundary_covering = report.max_boundary_covering;
+  return v;
+}
+
+template <int d>
+Boundary_verdict check_boundary(const Mesh_file& mesh)
+{
+  // Only the counts are reported: list no pair.
+  const auto report = MU::check_boundary_self_intersections<d>(points_of<d>(mesh.map), simplices_of<d>(mesh), 0);
+  Boundary_verdict v;
+  v.boundary_facets = report.number_of_boundary_facets;
+  v.intersecting_pairs = report.number_of_intersecting_pairs;
+  v.degenerate_facets = report.degenerate_facets;
   return v;
 }
 
@@ -141,6 +161,29 @@ Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed
 {
   check_shape(mesh, is_fixed);
   return mesh.simplex_size == 3 ? check<2>(mesh, is_fixed) : check<3>(mesh, is_fixed);
+}
+
+Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh)
+{
+  check_shape(mesh, {});
+  return mesh.simplex_size == 3 ? check_boundary<2>(mesh) : check_boundary<3>(mesh);
+}
+
+Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+{
+  check_shape(mesh, is_fixed);
+  if(mesh.simplex_size != 3) throw Invalid_problem("only 2D maps (triangles) can be drawn");
+  Svg_map map;
+  map.positions = points_of<2>(mesh.map);
+  map.triangles = simplices_of<2>(mesh);
+  map.reference_orientation = reference_orientations(mesh);
+  map.is_fixed = is_fixed;
+  // The targets the untangler uses (make_input): 3D rest triangles laid flat.
+  const auto input = make_input<2>(mesh, {});
+  for(const auto& t : input.targets)
+    map.targets.push_back({{{t[0][0], t[0][1]}, {t[1][0], t[1][1]}, {t[2][0], t[2][1]}}});
+  if(map.targets.size() != map.triangles.size()) map.targets.clear();
+  return map;
 }
 
 std::vector<int> reference_orientations(const Mesh_file& mesh)

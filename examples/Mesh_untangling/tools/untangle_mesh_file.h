@@ -11,6 +11,8 @@
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
+#include "svg_writer.h"
+
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -60,8 +62,28 @@ struct Verdict
   std::size_t input_defects = 0;
   std::size_t non_manifold = 0;
   bool locally_invertible = false;
+  // The same counts apart, and the windings (see Invertibility_report).
+  std::size_t overwound_interior_vertices = 0;
+  std::size_t overwound_boundary_vertices = 0;
+  std::size_t overwound_interior_edges = 0;
+  std::size_t overwound_boundary_edges = 0;
+  double min_covering = 1, max_covering = 1, max_boundary_covering = 0;
 };
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
+
+/// Whether the image of the boundary (edges in 2D, triangles in 3D) meets
+/// itself: the global-invertibility check of global_invertibility.h.
+struct Boundary_verdict
+{
+  std::size_t boundary_facets = 0;
+  std::size_t intersecting_pairs = 0;
+  std::size_t degenerate_facets = 0;
+};
+Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh);
+
+/// The picture of a 2D map (triangles): its positions, orientations and
+/// targets as the untangler sees them.  Throws Invalid_problem for tetrahedra.
+Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
 /// Orientation each element must have: that of its rest simplex (triangles
 /// with 3D rest are always +1); +1 without rest.
