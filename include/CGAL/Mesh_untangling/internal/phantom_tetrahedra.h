@@ -30,6 +30,11 @@
 //     by the tets (p, p*, p_i, p_i+1); the fan around (p, p*) is aggregated.
 //     p* is a new free unknown; its initial map position is the image of
 //     its rest offset through the best affine fit of the map on the star.
+//   - A boundary vertex whose boundary star is all fixed, and a boundary
+//     edge whose two boundary faces are fixed, are left alone: their
+//     boundary cannot fold, and their phantoms would confine free neighbours
+//     to the cone or wedge the fixed faces see (under a large prescribed
+//     motion, like the rotated cavities, that makes the problem infeasible).
 //   - Fixed vertices.  As in 2D, the fixed outer vertices of a fan split it
 //     into sectors aggregated on their own: a fixed outer vertex is never
 //     dropped, and no phantom edge joins two fixed vertices (it would cut
@@ -64,6 +69,8 @@ struct Phantom_options_3
   double max_dihedral_angle = phantom_pi * (1 - 1e-6);
   /// every phantom tetrahedron has at least this mean ratio in rest (1: regular)
   double min_quality = 1e-2;
+  /// close boundary vertex stars (regular and irregular); false: edge fans only
+  bool close_boundary_stars = true;
 };
 
 struct Phantom_statistics_3
@@ -71,10 +78,12 @@ struct Phantom_statistics_3
   std::size_t interior_edges = 0;                ///< closed edge fans seen
   std::size_t boundary_edges = 0;                ///< open edge fans seen
   std::size_t non_manifold_edges = 0;            ///< skipped: the fan is not one cycle or one path
+  std::size_t prescribed_boundary_edges = 0;     ///< skipped: boundary edge with both ends and both boundary faces fixed
   std::size_t regular_boundary_vertices = 0;     ///< closed around an interior edge (p, q)
   std::size_t irregular_boundary_vertices = 0;   ///< closed around a phantom vertex
   std::size_t unprotected_boundary_vertices = 0; ///< neither construction found a good tetrahedron
   std::size_t non_manifold_boundary_vertices = 0;///< skipped: the boundary link is not one loop
+  std::size_t prescribed_boundary_vertices = 0;  ///< skipped: the vertex and its boundary link are all fixed
   std::size_t protected_stars = 0;               ///< edge fans and vertex stars that received a phantom
   std::size_t incomplete_stars = 0;              ///< fans left above the basic fan, and unprotected boundary vertices
   std::size_t sectors = 0;                       ///< sectors aggregated on their own (fans with >= 2 fixed outer vertices)
@@ -181,7 +190,7 @@ public:
   {
     stats_ = Phantom_statistics_3();
     protect_edge_fans();
-    protect_boundary_vertices();
+    if(options_.close_boundary_stars) protect_boundary_vertices();
     stats_.phantom_tetrahedra = result_.elements.size();
     stats_.phantom_vertices = result_.extra_vertices.size();
     stats = stats_;
@@ -358,6 +367,13 @@ private:
       bool closed = false;
       if(!order_link(link, outer, closed)) { ++stats_.non_manifold_edges; continue; }
       ++(closed ? stats_.interior_edges : stats_.boundary_edges);
+      // A boundary edge on a fixed boundary (both ends and both boundary
+      // faces fixed) turns by a prescribed angle: as for prescribed boundary
+      // stars, its phantoms would only pin free vertices to a fixed wedge.
+      if(!closed && fixed(entries[first].u) && fixed(entries[first].v) && fixed(outer.front()) && fixed(outer.back())) {
+        ++stats_.prescribed_boundary_edges;
+        continue;
+      }
       std::size_t added = 0;
       if(!aggregate_fan(entries[first].u, entries[first].v, outer, closed, added)) ++stats_.incomplete_stars;
       if(added > 0) ++stats_.protected_stars;
@@ -499,6 +515,13 @@ private:
         ++stats_.non_manifold_boundary_vertices;
         continue;
       }
+      // A boundary star whose vertices are all fixed is prescribed: it cannot
+      // fold, and closing it would confine the free neighbour q (or p*) to
+      // the cone its fixed faces see, which a large prescribed motion (the
+      // rotated cavities) leaves no room for.
+      bool prescribed = fixed(p);
+      for(std::size_t w : loop) prescribed = prescribed && fixed(w);
+      if(prescribed) { ++stats_.prescribed_boundary_vertices; continue; }
       sorted_loop_ = loop;
       std::sort(sorted_loop_.begin(), sorted_loop_.end());
       const std::size_t k = loop.size(), before = result_.elements.size();
