@@ -30,8 +30,8 @@ namespace {
 
 struct Arguments
 {
-  std::string input, rest, fixed, output, report, solver = "newton";
-  bool fix_boundary = false, quiet = false;
+  std::string input, rest, fixed, output, report, solver = "newton", init = "given";
+  bool fix_boundary = false, quiet = false, no_phantoms = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
 };
@@ -92,6 +92,11 @@ Mesh_file read_problem(const Arguments& args)
 {
   Mesh_file mesh = IO::read_mesh_file(args.input);
   const std::string ext = lowercase_extension(args.input);
+  if(args.init == "project") {
+    if(!args.rest.empty()) throw Usage_error("--init project makes the surface its own rest: do not give --rest");
+    project_surface_on_best_fit_plane(mesh);
+    return mesh;
+  }
   if(ext == ".obj" && mesh.map_dimension == 0)
     throw Usage_error(args.input + ": no texture coordinates (vt): an OBJ input holds the domain in v and the map in vt");
   if(mesh.simplex_size == 0)
@@ -177,6 +182,11 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["elements"] = r.number_of_elements;
   j["fixed_vertices"] = r.number_of_fixed_vertices;
   j["degenerate_targets_replaced"] = r.degenerate_targets_replaced;
+  j["initial_map"] = args.init == "project" ? "projection on the best-fit plane" : "given";
+  j["phantom_protection"] = !args.no_phantoms;
+  j["phantom_elements"] = r.number_of_phantom_elements;
+  j["phantom_vertices"] = r.number_of_phantom_vertices;
+  j["incomplete_phantom_stars"] = r.incomplete_phantom_stars;
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : (mesh.simplex_size == 3 ? 1. / 128 : 0.5);
   j["status"] = MU::to_string(r.status);
@@ -220,6 +230,7 @@ int run(const Arguments& args)
   options.theta = args.theta;
   options.max_iterations = args.max_iterations;
   options.max_seconds = args.time_limit;
+  options.phantoms = !args.no_phantoms;
   if(!args.quiet)
     options.progress = [](const MU::Untangling_step& s) {
       std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s%s\n", s.step,
@@ -237,10 +248,10 @@ int run(const Arguments& args)
   if(report) write_report(*report, args, fixed_source, mesh, result, verdict);
 
   if(!args.quiet)
-    std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, %.2f s\n",
-                 verdict.locally_invertible ? "locally invertible" : "NOT locally invertible", result.inverted_before,
-                 verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges, verdict.input_defects,
-                 result.seconds);
+    std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, "
+                 "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
+                 result.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
+                 verdict.input_defects, result.number_of_phantom_elements, result.seconds);
   return verdict.locally_invertible ? 0 : 1;
 }
 
@@ -263,6 +274,11 @@ int main(int argc, char** argv)
     ->check(CLI::Range(0., 1.));
   app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(CLI::PositiveNumber);
   app.add_option("--time-limit", args.time_limit, "seconds, checked after each eps step")->check(CLI::NonNegativeNumber);
+  app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
+                 "projected on its best-fit plane; the surface is the rest)")
+    ->check(CLI::IsMember({"given", "project"}));
+  app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (the published scheme: "
+               "no inverted element, but stars may be covered twice)");
   app.add_flag("-q,--quiet", args.quiet, "no progress on stderr");
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #ifndef CGAL_UNTANGLE_MESH_H
 #define CGAL_UNTANGLE_MESH_H
 
+#include <CGAL/Mesh_untangling/Phantom_element.h>
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
@@ -40,6 +41,30 @@ Untangling_options read_options(const NamedParameters& np)
   o.callback = choose_parameter(get_parameter(np, internal_np::callback),
                                 std::function<bool(const Untangling_step&)>());
   return o;
+}
+
+/// The phantom protection asked for: `phantom_protection` and the user's
+/// `phantom_elements` (vertex handles turned into indices by `index_of`).
+template <int d, typename NamedParameters, typename IndexOf>
+Protection_request<d> read_protection(const NamedParameters& np, const IndexOf& index_of)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Protection_request<d> request;
+  request.enabled = choose_parameter(get_parameter(np, internal_np::mesh_untangling_phantom_protection), true);
+  const auto supplied = get_parameter(np, internal_np::mesh_untangling_phantom_elements);
+  if constexpr(is_given<std::decay_t<decltype(supplied)>>())
+    request.supplied = to_phantom_elements<d>(supplied, index_of);
+  return request;
+}
+
+/// Hands the phantoms used to `phantom_output`, if given.
+template <typename Vertex, typename Point, int d, typename NamedParameters, typename VertexOf>
+void write_phantom_output(const NamedParameters& np, const Phantom_elements<d>& used, const VertexOf& vertex_of)
+{
+  const auto out = CGAL::parameters::get_parameter(np, internal_np::mesh_untangling_phantom_output);
+  if constexpr(is_given<std::decay_t<decltype(out)>>())
+    output_phantom_elements<Vertex, Point>(used, out, vertex_of);
 }
 
 template <typename T> struct Is_named_parameters : std::false_type {};
@@ -88,6 +113,10 @@ struct Is_named_parameters<Named_function_parameters<T, Tag, Base>> : std::true_
 ///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, face_target_map}
 ///     \cgalParamDescription{see `CGAL/Mesh_untangling/parameters.h`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::phantom_protection, phantom_elements, phantom_output}
+///     \cgalParamDescription{free-boundary protection: on by default when some boundary vertex is free;
+///       phantoms supplied or read as `Mesh_untangling::Phantom_element<vertex_descriptor, Point_2>`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` is a triangle mesh.
@@ -105,17 +134,25 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
                                       Static_boolean_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, false>());
   const auto targets = get_parameter(np, internal_np::mesh_untangling_face_target_map);
   const auto options = Mesh_untangling::internal::read_options(np);
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_2 = typename boost::property_traits<VertexUVMap>::value_type;
 
   Mesh_untangling::internal::Face_graph_adaptor<TriangleMesh> adaptor(tm);
+  const auto index_of = [&](vertex_descriptor v) { return adaptor.index_of(v); };
+  const auto vertex_of = [&](std::size_t i) { return adaptor.vertex(i); };
+  const auto protection = Mesh_untangling::internal::read_protection<2>(np, index_of);
   auto input = adaptor.make_input(uv, domain, fixed, targets);
   if(!adaptor.error().empty()) {
     Mesh_untangling::Untangling_result invalid;
     invalid.message = adaptor.error();
     return invalid;
   }
-  const auto result = Mesh_untangling::internal::untangle<2>(input, options);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT)
+  Mesh_untangling::internal::Phantom_elements<2> phantoms;
+  const auto result = Mesh_untangling::internal::untangle<2>(input, options, protection, &phantoms);
+  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
     adaptor.write_back(input, uv);
+    Mesh_untangling::internal::write_phantom_output<vertex_descriptor, Point_2>(np, phantoms, vertex_of);
+  }
   return result;
 }
 
@@ -151,11 +188,17 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_point_map);
   const auto targets = get_parameter(np, internal_np::mesh_untangling_cell_target_map);
   const auto options = Mesh_untangling::internal::read_options(np);
+  const auto identity = [](std::size_t i) { return i; };
+  const auto protection = Mesh_untangling::internal::read_protection<3>(np, identity);
+  using Point_3 = typename boost::property_traits<decltype(get(CGAL::vertex_point, tc))>::value_type;
 
   auto input = Mesh_untangling::internal::make_tetrahedral_input(tc, fixed, rest, targets);
-  const auto result = Mesh_untangling::internal::untangle<3>(input, options);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT)
+  Mesh_untangling::internal::Phantom_elements<3> phantoms;
+  const auto result = Mesh_untangling::internal::untangle<3>(input, options, protection, &phantoms);
+  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
     Mesh_untangling::internal::write_back_tetrahedral(input, tc);
+    Mesh_untangling::internal::write_phantom_output<std::size_t, Point_3>(np, phantoms, identity);
+  }
   return result;
 }
 
@@ -192,10 +235,15 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
       return invalid;
     }
   }
+  const auto identity = [](std::size_t i) { return i; };
+  const auto protection = Mesh_untangling::internal::read_protection<d>(np, identity);
   auto input = Mesh_untangling::internal::make_soup_input<d>(points, simplices, fixed, rest);
-  const auto result = Mesh_untangling::internal::untangle<d>(input, options);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT)
+  Mesh_untangling::internal::Phantom_elements<d> phantoms;
+  const auto result = Mesh_untangling::internal::untangle<d>(input, options, protection, &phantoms);
+  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
     Mesh_untangling::internal::write_back_soup<d>(input, points);
+    Mesh_untangling::internal::write_phantom_output<std::size_t, Point>(np, phantoms, identity);
+  }
   return result;
 }
 

@@ -18,6 +18,7 @@
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/property_map.h>
 #include <CGAL/untangle_mesh.h>
+#include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
 #include <boost/property_map/function_property_map.hpp>
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <string>
@@ -387,6 +389,89 @@ void test_all_free(const std::string& name, const Make_point& make_point, MU::So
   CHECK_MESSAGE(finite, name);
   // the map was already optimal up to a rigid motion: it stays about where it was
   CHECK_MESSAGE(max_distance(before, after) < 1, name << ": moved by " << max_distance(before, after));
+}
+
+// ---------------------------------------------------------------------------
+// Free boundaries: phantom protection and its named parameters, and the
+// projection that starts a surface flattening.
+
+void test_phantom_parameters()
+{
+  using Mesh = CGAL::Surface_mesh<Point_3>;
+  using G = Grid<Mesh>;
+  using Phantom = MU::Phantom_element<G::vertex_descriptor, G::UV>;
+  const auto wavy = [](double x, double y) { return Point_3(x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y)); };
+
+  // A flattening start: the wavy surface projected on its best-fit plane,
+  // then two interior vertices swapped, only those two fixed.
+  auto make = [&](G& g) {
+    MU::project_on_best_fit_plane(g.mesh, g.uv);
+    for(auto v : g.vertex_list) put(g.fixed, v, false);
+    const auto a = g.vertex_list[8], b = g.vertex_list[26];
+    const G::UV pa = get(g.uv, a);
+    put(g.uv, a, get(g.uv, b));
+    put(g.uv, b, pa);
+    put(g.fixed, a, true);
+    put(g.fixed, b, true);
+    g.initial.clear();
+    for(auto v : g.vertex_list) g.initial.push_back(get(g.uv, v));
+  };
+
+  G g(6, wavy, false);
+  // the projection keeps every face's orientation on a surface that does not fold
+  MU::project_on_best_fit_plane(g.mesh, g.uv);
+  CHECK(g.inverted() == 0);
+  make(g);
+  CHECK(g.inverted() > 0);
+  std::vector<Phantom> phantoms;
+  const auto r = CGAL::untangle_mesh(g.mesh, g.uv, MU::parameters::phantom_output(std::back_inserter(phantoms),
+                                     CGAL::parameters::vertex_is_constrained_map(g.fixed)));
+  CHECK_SUCCESS(r);
+  CHECK(g.locally_invertible() && g.fixed_unchanged());
+  CHECK_MESSAGE(r.number_of_phantom_elements > 0 && phantoms.size() == r.number_of_phantom_elements,
+                r.number_of_phantom_elements << " phantoms reported, " << phantoms.size() << " written");
+  CHECK(r.number_of_phantom_vertices == 0);
+  bool valid = true;
+  for(const Phantom& p : phantoms) {
+    for(auto v : p.vertices) valid = valid && g.index(v) < g.vertex_list.size();
+    valid = valid && CGAL::orientation(p.target[0], p.target[1], p.target[2]) == CGAL::POSITIVE;
+  }
+  CHECK(valid);
+  const Points2 protected_result = g.positions();
+
+  // the same phantoms supplied by the user: the same run, bit for bit
+  G h(6, wavy, false);
+  make(h);
+  const auto r_supplied = CGAL::untangle_mesh(h.mesh, h.uv, MU::parameters::phantom_elements(phantoms,
+                                              CGAL::parameters::vertex_is_constrained_map(h.fixed)));
+  CHECK_SUCCESS(r_supplied);
+  CHECK(r_supplied.number_of_phantom_elements == phantoms.size());
+  CHECK(h.positions() == protected_result);
+
+  // protection switched off: no phantom used or written
+  G u(6, wavy, false);
+  make(u);
+  std::vector<Phantom> none;
+  const auto r_off = CGAL::untangle_mesh(u.mesh, u.uv, MU::parameters::phantom_protection(false,
+                                         MU::parameters::phantom_output(std::back_inserter(none),
+                                         CGAL::parameters::vertex_is_constrained_map(u.fixed))));
+  CHECK(r_off.number_of_phantom_elements == 0 && none.empty());
+  CHECK(r_off.inverted_after == 0);
+
+  // a fixed boundary needs no phantom
+  G f(6, wavy, true);
+  const auto r_fixed = CGAL::untangle_mesh(f.mesh, f.uv, CGAL::parameters::vertex_is_constrained_map(f.fixed));
+  CHECK_SUCCESS(r_fixed);
+  CHECK(r_fixed.number_of_phantom_elements == 0);
+
+  // malformed supplied phantoms: invalid input naming the phantom, nothing written
+  G b(6, wavy, false);
+  make(b);
+  std::vector<Phantom> bad = {phantoms.front()};
+  bad.front().vertices[2] = bad.front().vertices[0];
+  const auto r_bad = CGAL::untangle_mesh(b.mesh, b.uv, MU::parameters::phantom_elements(bad));
+  CHECK_INVALID(r_bad, "phantom element 0");
+  CHECK(b.unchanged());
 }
 
 // ---------------------------------------------------------------------------
@@ -821,6 +906,7 @@ int main()
   test_all_free<CGAL::Surface_mesh<Point_3>>("all free, bumpy", bumpy, MU::Solver::NEWTON);
 
   test_all_fixed();
+  test_phantom_parameters();
 
   std::cout << (test::exit_code() == 0 ? "all API checks passed" : "API checks failed") << std::endl;
   return test::exit_code();

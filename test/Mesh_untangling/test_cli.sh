@@ -393,6 +393,51 @@ awk '/^Triangles/ { c = 1; print; next } c == 1 { c = 2; print; next } c == 2 { 
 fails mesh_index_out_of_range 'range\.mesh:35: triangle 1: vertex index 999 is out of range' range.mesh
 cd .. || exit 1
 
+# ---------------------------------------------------------------------------
+# Free boundaries: a curved surface flattened from its projection (--init
+# project), phantoms on by default, --no-phantoms.
+awk 'BEGIN { n = 6; print "OFF"; print (n + 1) * (n + 1), 2 * n * n, 0;
+  for(j = 0; j <= n; ++j) for(i = 0; i <= n; ++i) { x = i / n - 0.5; y = j / n - 0.5; print x, y, 0.8 * (x * x + y * y) }
+  for(j = 0; j < n; ++j) for(i = 0; i < n; ++i) { a = j * (n + 1) + i;
+    print 3, a, a + 1, a + n + 2; print 3, a, a + n + 2, a + n + 1 } }' > surface.off
+surface_sum=$(cksum < surface.off)
+run flat surface.off --init project -o flat.obj --report flat.json -q
+check "flatten: exit 0" rc_is flat 0
+check "flatten: initial map is the projection" json_is flat.json initial_map '"projection on the best-fit plane"'
+check "flatten: phantoms used" json_positive flat.json phantom_elements
+check "flatten: phantom_protection true" json_is flat.json phantom_protection true
+check "flatten: locally invertible" json_is flat.json locally_invertible true
+check "flatten: 0 fixed" json_is flat.json fixed_vertices 0
+check "flatten: OBJ keeps the surface in v" [ "$(grep -c '^v ' flat.obj)" = 49 ]
+check "flatten: OBJ has the map in vt" [ "$(grep -c '^vt ' flat.obj)" = 49 ]
+check "flatten: input unchanged" [ "$(cksum < surface.off)" = "$surface_sum" ]
+run flat_off surface.off -o flat.off -q
+check "surface without --init project: exit 2" rc_is flat_off 2
+check "surface without --init project: names the z" err_has flat_off 'has z = '
+check "surface without --init project: nothing written" test ! -e flat.off
+run flat_rest surface.off --init project --rest surface.off -o flat2.obj -q
+check "--init project with --rest: exit 2" rc_is flat_rest 2
+check "--init project with --rest: says why" err_has flat_rest 'do not give --rest'
+check "--init project with --rest: nothing written" test ! -e flat2.obj
+run flat_bad surface.off --init guess -o flat3.obj -q
+check "--init guess: exit 2" rc_is flat_bad 2
+check "--init guess: nothing written" test ! -e flat3.obj
+run flat_fixed small.input -o fixed-boundary.input --report fixed_boundary.json -q
+check "fixed boundary: no phantoms" json_is fixed_boundary.json phantom_elements 0
+if [ -n "$DATA" ] && [ -f "$DATA/tlc-format/sea-free51.input" ]; then
+  run sea "$DATA/tlc-format/sea-free51.input" -o sea.input --report sea.json -q
+  check "sea-free51: exit 0 with phantoms" rc_is sea 0
+  check "sea-free51: phantoms used" json_positive sea.json phantom_elements
+  check "sea-free51: no over-wound vertex" json_is sea.json overwound_vertices 0
+  run sea_bare "$DATA/tlc-format/sea-free51.input" -o sea-bare.input --report sea_bare.json --no-phantoms -q
+  check "sea-free51 --no-phantoms: exit 1" rc_is sea_bare 1
+  check "sea-free51 --no-phantoms: no phantom" json_is sea_bare.json phantom_elements 0
+  check "sea-free51 --no-phantoms: phantom_protection false" json_is sea_bare.json phantom_protection false
+  check "sea-free51 --no-phantoms: 0 inverted" json_is sea_bare.json inverted_after 0
+  check "sea-free51 --no-phantoms: over-wound vertex left" json_positive sea_bare.json overwound_vertices
+  check "sea-free51 --no-phantoms: result written" test -s sea-bare.input
+fi
+
 #
 # Real data (../shared/data), when present.
 #

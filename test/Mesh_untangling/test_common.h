@@ -6,6 +6,7 @@
 #ifndef MESH_UNTANGLING_TEST_COMMON_H
 #define MESH_UNTANGLING_TEST_COMMON_H
 
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -38,5 +39,17 @@ inline std::string data_dir(int argc, char** argv, const std::string& what)
                 << message << std::endl;                                                          \
     }                                                                                             \
   } while(false)
+
+/// Checks that `expression` throws a std::exception whose what() contains `phrase`.
+#define CHECK_THROWS_MESSAGE(expression, phrase)                                                  \
+  do {                                                                                            \
+    bool thrown_ = false;                                                                         \
+    std::string what_thrown_ = "nothing thrown";                                                  \
+    try { (void)(expression); } catch(const std::exception& e_) { thrown_ = true; what_thrown_ = e_.what(); } \
+    CHECK_MESSAGE(thrown_ && what_thrown_.find(phrase) != std::string::npos,                      \
+                  "expected an exception saying '" << (phrase) << "', got: " << what_thrown_);    \
+  } while(false)
+
+#define CHECK_THROWS(expression) CHECK_THROWS_MESSAGE(expression, "")
 
 #endif

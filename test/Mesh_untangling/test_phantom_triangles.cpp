@@ -470,25 +470,48 @@ static void test_random_meshes()
   }
 }
 
-static void test_append_helpers()
+static void test_append_and_remove()
 {
   Mesh2 m = grid(4);
   MI::Untangling_input<2> in;
   in.positions = m.rest;
   in.elements = m.triangles;
-  // no targets: regular ones of the map's mean size are filled in first
-  const std::size_t count = MI::add_phantom_triangles(in);
-  CHECK(count == m.triangles.size());
-  CHECK(in.elements.size() > count && in.targets.size() == in.elements.size());
+  // no targets: regular ones of the map's size are filled in first
+  MI::Protection_request<2> request;
+  const MI::Protection_summary summary = MI::protect_boundary<2>(in, request);
+  const std::size_t count = m.triangles.size();
+  CHECK(summary.phantom_elements > 0 && summary.phantom_vertices == 0);
+  CHECK(in.elements.size() == count + summary.phantom_elements && in.targets.size() == in.elements.size());
+  CHECK(in.number_of_mesh_elements() == count && in.number_of_mesh_vertices() == m.rest.size());
   double target_area = 0;
   for(std::size_t k = 0; k < count; ++k) target_area += MI::simplex_volume<2>(in.targets[k]);
   CHECK(std::abs(target_area - 1.) < 1e-12);
   for(std::size_t k = count; k < in.elements.size(); ++k) CHECK(MI::simplex_volume<2>(in.targets[k]) > 0);
+  CHECK_THROWS(MI::append_phantom_elements<2>(in, MI::Phantom_elements<2>()));   // appended twice
+  MI::remove_phantom_elements<2>(in);
+  CHECK(in.elements.size() == count && in.targets.size() == count && in.phantom_elements == 0);
 
+  // protection off, or a fixed boundary: nothing added, targets left as they were
   MI::Untangling_input<2> other;
   other.positions = m.rest;
   other.elements = m.triangles;
-  CHECK(MI::append_phantom_triangles(other, {}) == m.triangles.size() && other.targets.empty());
+  request.enabled = false;
+  CHECK(MI::protect_boundary<2>(other, request).phantom_elements == 0 && other.targets.empty());
+  request.enabled = true;
+  other.is_fixed.assign(m.rest.size(), false);
+  for(std::size_t i = 0; i <= 4; ++i)
+    for(std::size_t j : {std::size_t(0), std::size_t(4)}) other.is_fixed[m.id(i, j)] = other.is_fixed[m.id(j, i)] = true;
+  CHECK(MI::protect_boundary<2>(other, request).phantom_elements == 0 && other.elements.size() == count);
+
+  // malformed supplied phantoms are refused by name
+  MI::Untangling_input<2> third;
+  third.positions = m.rest;
+  third.elements = m.triangles;
+  MI::Phantom_elements<2> bad;
+  bad.elements.push_back({0, 1, 99});
+  bad.targets.push_back(MI::regular_simplex<2>());
+  request.supplied = bad;
+  CHECK_THROWS_MESSAGE(MI::protect_boundary<2>(third, request), "phantom element 0: vertex 99 does not exist");
 }
 
 // ---------------------------------------------------------------------------
@@ -513,13 +536,19 @@ static std::vector<std::array<double, 2>> arrays(const std::vector<Eigen::Vector
 /// Untangles, with or without phantoms, and checks the mesh's own triangles.
 static Outcome run(MI::Untangling_input<2> in, bool protect, MI::Phantom_statistics* stats = nullptr)
 {
-  const std::size_t mesh_elements = protect ? MI::add_phantom_triangles(in, stats) : in.elements.size();
+  if(protect && stats)
+    MI::compute_phantom_triangles(in.positions.size(), in.elements, in.targets, in.is_fixed, stats);
   MI::Untangling_options options;
   options.max_outer_iterations = 400;
-  const MU::Untangling_result result = MI::untangle<2>(in, options);
-  const Triangles mesh(in.elements.begin(), in.elements.begin() + mesh_elements);
+  MI::Protection_request<2> request;
+  request.enabled = protect;
+  const MU::Untangling_result result = MI::untangle<2>(in, options, request);
+  CHECK(in.elements.size() == in.number_of_mesh_elements() && in.phantom_elements == 0);
+  CHECK(protect || result.number_of_phantom_elements == 0);
+  if(stats) CHECK(result.number_of_phantom_elements == stats->phantoms);
+  const Triangles mesh = in.elements;
   std::vector<int> reference;
-  for(std::size_t k = 0; k < mesh_elements; ++k) reference.push_back(MI::simplex_volume<2>(in.targets[k]) > 0 ? 1 : -1);
+  for(std::size_t k = 0; k < mesh.size(); ++k) reference.push_back(MI::simplex_volume<2>(in.targets[k]) > 0 ? 1 : -1);
   Outcome o;
   o.report = MU::check_local_invertibility<2>(arrays(in.positions), mesh, reference, in.is_fixed);
   o.covering = MU::vertex_covering_numbers_2(arrays(in.positions), mesh, reference);
@@ -627,7 +656,7 @@ int main()
   test_fixed_vertices();
   test_non_manifold_and_input();
   test_random_meshes();
-  test_append_helpers();
+  test_append_and_remove();
   test_twelve_triangle_star();
   test_swapped_vertices();
   std::cout << (test::failures() == 0 ? "all phantom triangle tests passed\n" : "FAILURES\n");

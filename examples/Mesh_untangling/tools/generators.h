@@ -9,6 +9,9 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <random>
 
@@ -90,6 +93,76 @@ inline void perturb_interior(Mesh_file& m, std::size_t n, double amplitude, std:
     if(boundary) { m.fixed.push_back(v); continue; }
     for(int c = 0; c < dimension; ++c) m.map[v][c] += offset(random);
   }
+}
+
+/// Inverse sheet forming (paper, 2D experiments): a flat sheet of length
+/// `length` and width 1, gridded `ns` x `ny`, bent along its length into a
+/// profile whose tangent turns by up to `max_angle` radians (past vertical
+/// when above π/2, so the walls overhang), then projected on Oxy.  The rest
+/// is the bent sheet (3D, isometric to the flat one, so a perfect answer
+/// exists: the flat sheet); the map is the projection, which folds where
+/// the walls overhang.  No vertex is fixed.
+inline Mesh_file make_formed_sheet(std::size_t ns, std::size_t ny, double max_angle, double length = 3)
+{
+  Mesh_file m = make_square_grid(1);
+  m.simplices.clear();
+  m.rest.clear();
+  const double pi = 3.14159265358979323846;
+  // the profile by its tangent angle phi(s) = max_angle sin(2 pi s / length): a hump and a trough
+  std::vector<std::array<double, 2>> profile(ns + 1, {0., 0.});
+  const int substeps = 64;
+  for(std::size_t i = 1; i <= ns; ++i) {
+    profile[i] = profile[i - 1];
+    for(int k = 0; k < substeps; ++k) {
+      const double h = length / ns / substeps, s = length * double(i - 1) / ns + (k + 0.5) * h;
+      const double phi = max_angle * std::sin(2 * pi * s / length);
+      profile[i][0] += h * std::cos(phi);
+      profile[i][1] += h * std::sin(phi);
+    }
+  }
+  auto id = [ns](std::size_t i, std::size_t j) { return j * (ns + 1) + i; };
+  for(std::size_t j = 0; j <= ny; ++j)
+    for(std::size_t i = 0; i <= ns; ++i)
+      m.rest.push_back({profile[i][0], double(j) / ny, profile[i][1]});
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < ns; ++i) {
+      m.simplices.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), 0});
+      m.simplices.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1), 0});
+    }
+  m.rest_dimension = 3;
+  m.map = m.rest;
+  for(auto& p : m.map) p[2] = 0;
+  m.map_dimension = 2;
+  return m;
+}
+
+/// A rough, strongly curved surface with bad elements: a grid of (n+1)^2
+/// vertices wrapped on the unit sphere up to the polar angle `max_polar`
+/// (past π/2 the rim curls under), each vertex moved along the normal by up
+/// to `roughness` grid spacings, and a fraction `bad` of the vertices pulled
+/// most of the way onto a neighbour (near-degenerate triangles).  The rest is
+/// that surface; no map (project it, e.g. project_surface_on_best_fit_plane).
+inline Mesh_file make_rough_cap(std::size_t n, double max_polar, double roughness, double bad, std::uint32_t seed)
+{
+  Mesh_file m = make_square_grid(n);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1., 1.), draw(0., 1.);
+  const double spacing = max_polar / n;
+  for(auto& p : m.rest) {
+    const double a = 2 * p[0] - 1, b = 2 * p[1] - 1;
+    const double azimuth = std::atan2(b, a), polar = max_polar * std::max(std::abs(a), std::abs(b));
+    const double r = 1 + roughness * spacing * unit(random);
+    p = {r * std::sin(polar) * std::cos(azimuth), r * std::sin(polar) * std::sin(azimuth), r * std::cos(polar)};
+  }
+  for(std::size_t v = 0; v < m.rest.size(); ++v) {
+    if(draw(random) >= bad) continue;
+    const std::size_t w = v % (n + 1) < n ? v + 1 : v - 1;   // the grid neighbour along the row
+    for(int c = 0; c < 3; ++c) m.rest[v][c] += 0.9 * (m.rest[w][c] - m.rest[v][c]);
+  }
+  m.rest_dimension = 3;
+  m.map = m.rest;
+  m.map_dimension = 3;
+  return m;
 }
 
 } // namespace Mesh_untangling_tools

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "untangle_mesh_file.h"
 
+#include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/internal/Untangler.h>
 #include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
@@ -89,7 +90,9 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   o.max_seconds = options.max_seconds;
   if(options.progress)
     o.callback = [&](const MU::Untangling_step& s) { options.progress(s); return true; };
-  const Untangling_result result = MU::internal::untangle<d>(in, o);
+  MU::internal::Protection_request<d> protection;
+  protection.enabled = options.phantoms;
+  const Untangling_result result = MU::internal::untangle<d>(in, o, protection);
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   for(std::size_t v = 0; v < in.positions.size(); ++v)
     for(int c = 0; c < d; ++c) mesh.map[v][c] = in.positions[v][c];
@@ -117,6 +120,21 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
 {
   check_shape(mesh, is_fixed);
   return mesh.simplex_size == 3 ? untangle<2>(mesh, is_fixed, options) : untangle<3>(mesh, is_fixed, options);
+}
+
+void project_surface_on_best_fit_plane(Mesh_file& mesh)
+{
+  if(mesh.simplex_size != 3) throw Invalid_problem("only a triangle mesh can be projected on a plane");
+  if(mesh.rest.empty()) {   // OFF, VTK, MEDIT: the one geometry is the surface (OBJ: v, any vt is replaced)
+    mesh.rest = mesh.map;
+    mesh.rest_dimension = mesh.map_dimension;
+  }
+  std::vector<Eigen::Vector3d> points;
+  for(const auto& p : mesh.rest) points.emplace_back(p[0], p[1], p[2]);
+  const auto uv = MU::internal::best_fit_plane_projection(points, simplices_of<2>(mesh));
+  mesh.map.assign(uv.size(), {0., 0., 0.});
+  for(std::size_t v = 0; v < uv.size(); ++v) mesh.map[v] = {uv[v][0], uv[v][1], 0.};
+  mesh.map_dimension = 2;
 }
 
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed)

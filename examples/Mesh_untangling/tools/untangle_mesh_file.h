@@ -30,6 +30,7 @@ struct Run_options
   double theta = -1;                   // < 0: the dimension's default
   std::size_t max_iterations = CGAL::Mesh_untangling::default_number_of_iterations;   // eps steps
   double max_seconds = std::numeric_limits<double>::infinity();
+  bool phantoms = true;                // protect a free boundary with phantom elements
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
 };
 
@@ -42,6 +43,12 @@ struct Invalid_problem : std::runtime_error { using std::runtime_error::runtime_
 /// positions.  Without rest geometry every target is a regular simplex.
 /// Throws Invalid_problem.
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options);
+
+/// Makes a 2D map for the triangulated surface `mesh.map` (3D positions):
+/// the surface becomes the rest geometry and the map its orthogonal
+/// projection on the best-fit plane (replacing any map the file had).
+/// Throws Invalid_problem if the mesh has no triangles.
+void project_surface_on_best_fit_plane(Mesh_file& mesh);
 
 /// Local invertibility of `mesh.map` relative to the orientation of the rest
 /// (or regular, all positive) targets.

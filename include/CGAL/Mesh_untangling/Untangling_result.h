@@ -51,6 +51,9 @@ struct Untangling_result
   std::size_t number_of_elements = 0;
   std::size_t number_of_fixed_vertices = 0;
   std::size_t degenerate_targets_replaced = 0; ///< rest elements too flat to serve, replaced by regular ones
+  std::size_t number_of_phantom_elements = 0;  ///< phantom elements added to the energy (free boundary protection)
+  std::size_t number_of_phantom_vertices = 0;  ///< phantom vertices added as unknowns (3D irregular boundary stars)
+  std::size_t incomplete_phantom_stars = 0;    ///< stars the phantom construction could not reduce fully (less protected)
 
   std::size_t inverted_before = 0;     ///< inverted elements in the input map (input defects excluded)
   std::size_t inverted_after = 0;      ///< inverted elements in the result (input defects excluded)

@@ -22,6 +22,9 @@ enum mesh_untangling_face_target_map_t { mesh_untangling_face_target_map };
 enum mesh_untangling_cell_target_map_t { mesh_untangling_cell_target_map };
 enum mesh_untangling_rest_point_map_t { mesh_untangling_rest_point_map };
 enum mesh_untangling_rest_points_t { mesh_untangling_rest_points };
+enum mesh_untangling_phantom_protection_t { mesh_untangling_phantom_protection };
+enum mesh_untangling_phantom_elements_t { mesh_untangling_phantom_elements };
+enum mesh_untangling_phantom_output_t { mesh_untangling_phantom_output };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -81,6 +84,19 @@ CGAL_MESH_UNTANGLING_PARAMETER(rest_point_map, mesh_untangling_rest_point_map_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// Random access range of rest points, one per soup point (soup entries only).
 CGAL_MESH_UNTANGLING_PARAMETER(rest_points, mesh_untangling_rest_points_t)
+
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `bool`: add phantom elements when some boundary vertex is free, so that
+/// the result is locally invertible rather than only free of inverted
+/// elements (default `true`; without a free boundary vertex none is needed).
+CGAL_MESH_UNTANGLING_PARAMETER(phantom_protection, mesh_untangling_phantom_protection_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A range of `CGAL::Mesh_untangling::Phantom_element`: phantoms to use instead
+/// of the ones the package would build (used even without a free boundary vertex).
+CGAL_MESH_UNTANGLING_PARAMETER(phantom_elements, mesh_untangling_phantom_elements_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// An output iterator receiving the `CGAL::Mesh_untangling::Phantom_element`s used.
+CGAL_MESH_UNTANGLING_PARAMETER(phantom_output, mesh_untangling_phantom_output_t)
 
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 

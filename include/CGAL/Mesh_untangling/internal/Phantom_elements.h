@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -40,30 +41,51 @@ struct Phantom_elements
   bool empty() const { return elements.empty(); }
 };
 
-/// How many of an input's elements and vertices are the mesh's own: the
-/// rest, appended by append_phantom_elements(), only shape the energy.
-struct Mesh_extent
+/// The targets make_untangling_problem() uses when none is given: regular
+/// simplices, oriented like most of the map, scaled so that their total
+/// volume is the map's (signed, or absolute when that is nearly zero).  With
+/// them given explicitly the untangling is the same (AUTOMATIC scaling then
+/// keeps them as given on free-boundary problems); phantom targets need them
+/// to have a size to be measured against.
+template <int d>
+std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> default_targets(const Untangling_input<d>& in)
 {
-  std::size_t vertices = 0;
-  std::size_t elements = 0;
-};
+  const bool negative = map_volume_sign<d>(in) < 0;
+  const std::size_t m = in.number_of_mesh_elements();
+  double signed_volume = 0, absolute_volume = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
+    for(int i = 0; i <= d; ++i) image[i] = in.positions[in.elements[k][i]];
+    const double v = simplex_volume<d>(image);
+    signed_volume += negative ? -v : v;
+    absolute_volume += std::abs(v);
+  }
+  const double wanted = signed_volume > 1e-3 * absolute_volume ? signed_volume : absolute_volume;
+  const double factor = wanted > 0 && m > 0 ? std::pow(wanted / double(m), 1. / d) : 1.;
+  auto t = regular_simplex<d>();
+  for(auto& p : t) p *= factor;
+  if(negative) std::swap(t[0], t[1]);
+  return std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>(m, t);
+}
 
 /// Appends `phantoms` to `in`: their vertices as free unknowns, their
-/// elements with their targets.  `in.targets` must already hold one target
-/// per mesh element (phantom targets are only meaningful next to them).
+/// elements with their targets; `in` counts them (`phantom_elements`,
+/// `phantom_vertices`).  `in.targets` must hold one target per mesh element
+/// (a phantom target's size only means something next to them).
 /// Throws std::invalid_argument on a malformed phantom (a vertex id out of
 /// range, a repeated vertex, a missing target).
 template <int d>
-Mesh_extent append_phantom_elements(Untangling_input<d>& in, const Phantom_elements<d>& phantoms)
+void append_phantom_elements(Untangling_input<d>& in, const Phantom_elements<d>& phantoms)
 {
-  const Mesh_extent mesh{in.positions.size(), in.elements.size()};
-  if(phantoms.empty() && phantoms.extra_vertices.empty()) return mesh;
+  if(in.phantom_elements > 0 || in.phantom_vertices > 0)
+    throw std::invalid_argument("phantom elements appended twice");
+  if(phantoms.empty() && phantoms.extra_vertices.empty()) return;
   if(in.targets.size() != in.elements.size())
     throw std::invalid_argument("phantom elements need one target per mesh element");
   if(phantoms.targets.size() != phantoms.elements.size())
     throw std::invalid_argument(std::to_string(phantoms.elements.size()) + " phantom elements with " +
                                 std::to_string(phantoms.targets.size()) + " targets");
-  const std::size_t n = mesh.vertices + phantoms.extra_vertices.size();
+  const std::size_t n = in.positions.size() + phantoms.extra_vertices.size();
   for(std::size_t k = 0; k < phantoms.elements.size(); ++k) {
     const auto& e = phantoms.elements[k];
     for(int i = 0; i <= d; ++i) {
@@ -80,17 +102,20 @@ Mesh_extent append_phantom_elements(Untangling_input<d>& in, const Phantom_eleme
   if(!in.is_fixed.empty()) in.is_fixed.resize(n, false);
   in.elements.insert(in.elements.end(), phantoms.elements.begin(), phantoms.elements.end());
   in.targets.insert(in.targets.end(), phantoms.targets.begin(), phantoms.targets.end());
-  return mesh;
+  in.phantom_elements = phantoms.elements.size();
+  in.phantom_vertices = phantoms.extra_vertices.size();
 }
 
 /// Undoes append_phantom_elements().
 template <int d>
-void remove_phantom_elements(Untangling_input<d>& in, const Mesh_extent& mesh)
+void remove_phantom_elements(Untangling_input<d>& in)
 {
-  in.positions.resize(mesh.vertices);
-  if(!in.is_fixed.empty()) in.is_fixed.resize(mesh.vertices);
-  in.elements.resize(mesh.elements);
-  if(in.targets.size() > mesh.elements) in.targets.resize(mesh.elements);
+  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
+  in.positions.resize(n);
+  if(!in.is_fixed.empty()) in.is_fixed.resize(n);
+  in.elements.resize(m);
+  if(in.targets.size() > m) in.targets.resize(m);
+  in.phantom_elements = in.phantom_vertices = 0;
 }
 
 } // namespace internal

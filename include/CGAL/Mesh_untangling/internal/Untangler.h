@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
+#include <CGAL/Mesh_untangling/internal/boundary_protection.h>
 #include <CGAL/Mesh_untangling/internal/Newton_solver.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 
@@ -53,14 +54,14 @@ std::vector<std::array<double, d>> as_arrays(const std::vector<Eigen::Matrix<dou
   return out;
 }
 
-/// Distortion figures of the current map (over the elements in the energy).
+/// Distortion figures of the current map (over the mesh elements in the energy).
 template <int d>
 void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
 {
   r.max_shape_distortion = r.mean_shape_distortion = 0;
   r.max_volume_distortion = r.mean_volume_distortion = 0;
   std::size_t positive = 0;
-  for(std::size_t k = 0; k < P.elements.size(); ++k) {
+  for(std::size_t k = 0; k < P.mesh_elements; ++k) {
     const auto J = jacobian(P, P.x.data(), k);
     const double D = J.determinant();
     if(!(D > 0)) continue;
@@ -156,6 +157,8 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   regular.positions = in.positions;
   regular.elements = in.elements;
   regular.is_fixed = in.is_fixed;
+  regular.phantom_elements = in.phantom_elements;
+  regular.phantom_vertices = in.phantom_vertices;
   for(std::size_t k = 0; k < in.elements.size(); ++k) {
     auto t = regular_simplex<d>();
     if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
@@ -186,8 +189,26 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
       for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
 }
 
+/// The invertibility report on the mesh part of `in` (phantoms left out).
+template <int d>
+Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                const std::vector<bool>& is_fixed)
+{
+  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
+  const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
+  const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
+  const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
+  const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
+  return check_local_invertibility<d>(as_arrays<d>(positions), elements, orientation, fixed);
+}
+
 /// Untangles `in.positions` in place (free vertices only: fixed ones are
 /// never written, so they keep their coordinates bit for bit).
+///
+/// With a free boundary, phantom elements (`protection`) are added to the
+/// energy for the run and removed before the verdict, which concerns the
+/// mesh alone; `phantoms_used`, when given, receives them (phantom vertices
+/// at their final positions).
 ///
 /// Stage 0 runs the published scheme with the given targets.  When it stalls
 /// (badly shaped targets can hold a few elements inverted forever), stage 1
@@ -196,17 +217,26 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
 /// times at most); stage 2 goes back to the given targets from that valid map,
 /// keeping it valid.
 template <int d>
-Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options)
+Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options,
+                           const Protection_request<d>& protection = Protection_request<d>(),
+                           Phantom_elements<d>* phantoms_used = nullptr)
 {
   Untangling_result result;
   result.solver = to_string(options.solver);
   result.number_of_vertices = in.positions.size();
   result.number_of_elements = in.elements.size();
+  const bool targets_given = !in.targets.empty();
 
   Untangling_problem<d> P;
   try {
+    validate_input<d>(in);
+    const Protection_summary protected_by = protect_boundary<d>(in, protection);
+    result.number_of_phantom_elements = protected_by.phantom_elements;
+    result.number_of_phantom_vertices = protected_by.phantom_vertices;
+    result.incomplete_phantom_stars = protected_by.incomplete_stars;
     P = make_untangling_problem<d>(in, options.scaling);
   } catch(const std::invalid_argument& e) {
+    remove_phantom_elements<d>(in);
     result.status = Untangling_status::INVALID_INPUT;
     result.message = e.what();
     return result;
@@ -214,14 +244,12 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
   const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report before =
-    check_local_invertibility<d>(as_arrays<d>(in.positions), in.elements, P.reference_orientation, is_fixed);
+  const Invertibility_report before = check_mesh<d>(in, P.reference_orientation, is_fixed);
   result.inverted_before = before.inverted_elements;
   result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
 
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
-  const bool targets_given = !in.targets.empty();
   Eps_loop_outcome outcome = loop.run(P, 0, stall_steps);
   if(outcome.stalled) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
@@ -251,8 +279,14 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   for(std::size_t v = 0; v < in.positions.size(); ++v)
     if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
 
-  const Invertibility_report report =
-    check_local_invertibility<d>(as_arrays<d>(in.positions), in.elements, P.reference_orientation, is_fixed);
+  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  if(phantoms_used && in.phantom_elements > 0) {   // (without phantoms, targets may be empty)
+    const std::size_t m = in.number_of_mesh_elements(), n = in.number_of_mesh_vertices();
+    phantoms_used->elements.assign(in.elements.begin() + m, in.elements.end());
+    phantoms_used->targets.assign(in.targets.begin() + m, in.targets.end());
+    phantoms_used->extra_vertices.assign(in.positions.begin() + n, in.positions.end());
+  }
+  remove_phantom_elements<d>(in);
   result.inverted_after = report.inverted_elements;
   result.overwound_vertices_after = report.overwound_interior_vertices + report.overwound_boundary_vertices;
   result.overwound_edges_after = report.overwound_interior_edges + report.overwound_boundary_edges;

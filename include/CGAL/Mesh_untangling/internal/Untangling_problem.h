@@ -34,6 +34,15 @@ struct Untangling_input
   std::vector<Simplex> elements;
   std::vector<Target> targets;          // empty: regular simplices
   std::vector<bool> is_fixed;           // empty: all free
+
+  // The last `phantom_elements` elements and `phantom_vertices` positions are
+  // phantoms (append_phantom_elements()): they shape the energy, but sizes,
+  // scaling and every verdict concern the mesh's own elements only.
+  std::size_t phantom_elements = 0;
+  std::size_t phantom_vertices = 0;
+
+  std::size_t number_of_mesh_vertices() const { return positions.size() - phantom_vertices; }
+  std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
 };
 
 
@@ -55,6 +64,7 @@ struct Untangling_problem
   std::vector<Simplex> elements;
   std::vector<Gradient_operator> gradient_operators;
   std::vector<double> weights;                      // target volumes, summing to 1
+  std::size_t mesh_elements = 0;                    // elements[0, mesh_elements) are the mesh's, the rest phantoms
 
   // bookkeeping to report on the user's elements
   std::vector<int> reference_orientation;           // per input element: orientation of its target
@@ -139,17 +149,67 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
   return on_boundary;
 }
 
+/// Whether some vertex on the boundary of the mesh (phantoms left out) is free:
+/// only then can a vertex star or edge fan be covered twice without any
+/// inverted element, and phantom elements are needed.
+template <int d>
+bool has_free_boundary_vertex(const Untangling_input<d>& in)
+{
+  const std::size_t n = in.number_of_mesh_vertices();
+  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + in.number_of_mesh_elements());
+  const std::vector<char> on_boundary = boundary_vertices<d>(n, mesh);
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
+  return false;
+}
+
 /// Sign of the total signed volume of the map (+1 when zero).
 template <int d>
 int map_volume_sign(const Untangling_input<d>& in)
 {
   double volume = 0;
-  for(const auto& e : in.elements) {
+  for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k) {
+    const auto& e = in.elements[k];
     std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
     for(int i = 0; i <= d; ++i) image[i] = in.positions[e[i]];
     volume += simplex_volume<d>(image);
   }
   return volume < 0 ? -1 : 1;
+}
+
+/// Checks sizes, vertex ids and finiteness; throws std::invalid_argument
+/// with a message naming the element or vertex.
+template <int d>
+void validate_input(const Untangling_input<d>& in)
+{
+  const std::size_t n = in.positions.size(), m = in.elements.size();
+  if(n == 0 || m == 0)
+    throw std::invalid_argument("the mesh has no vertex or no element");
+  if(!in.targets.empty() && in.targets.size() != m)
+    throw std::invalid_argument(std::to_string(in.targets.size()) + " target simplices for " + std::to_string(m) + " elements");
+  if(!in.is_fixed.empty() && in.is_fixed.size() != n)
+    throw std::invalid_argument("fixed-vertex flags for " + std::to_string(in.is_fixed.size()) + " vertices, the mesh has " + std::to_string(n));
+  for(std::size_t v = 0; v < n; ++v)
+    if(!in.positions[v].allFinite())
+      throw std::invalid_argument("vertex " + std::to_string(v) + " has a non-finite coordinate");
+  if(in.phantom_elements > m || in.phantom_vertices > n)
+    throw std::invalid_argument("more phantoms than elements or vertices");
+  const std::size_t mesh_m = in.number_of_mesh_elements(), mesh_n = in.number_of_mesh_vertices();
+  auto name = [&](std::size_t k) {
+    return k < mesh_m ? "element " + std::to_string(k) : "phantom element " + std::to_string(k - mesh_m);
+  };
+  for(std::size_t k = 0; k < m; ++k)
+    for(int i = 0; i <= d; ++i) {
+      // mesh elements never use phantom vertices
+      const std::size_t limit = k < mesh_m ? mesh_n : n;
+      if(in.elements[k][i] >= limit)
+        throw std::invalid_argument(name(k) + " refers to vertex " + std::to_string(in.elements[k][i]) + ", the mesh has " + std::to_string(limit));
+      for(int j = 0; j < i; ++j)
+        if(in.elements[k][i] == in.elements[k][j])
+          throw std::invalid_argument(name(k) + " repeats vertex " + std::to_string(in.elements[k][i]));
+      if(!in.targets.empty() && !in.targets[k][i].allFinite())
+        throw std::invalid_argument("target of " + name(k) + " has a non-finite coordinate");
+    }
 }
 
 /// Checks the input and builds the normalized problem; throws
@@ -161,26 +221,9 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
 {
   using Vector = Eigen::Matrix<double, d, 1>;
   using Target = std::array<Vector, d + 1>;
+  validate_input<d>(in);
   const std::size_t n = in.positions.size(), m = in.elements.size();
-  if(n == 0 || m == 0)
-    throw std::invalid_argument("the mesh has no vertex or no element");
-  if(!in.targets.empty() && in.targets.size() != m)
-    throw std::invalid_argument(std::to_string(in.targets.size()) + " target simplices for " + std::to_string(m) + " elements");
-  if(!in.is_fixed.empty() && in.is_fixed.size() != n)
-    throw std::invalid_argument("fixed-vertex flags for " + std::to_string(in.is_fixed.size()) + " vertices, the mesh has " + std::to_string(n));
-  for(std::size_t v = 0; v < n; ++v)
-    if(!in.positions[v].allFinite())
-      throw std::invalid_argument("vertex " + std::to_string(v) + " has a non-finite coordinate");
-  for(std::size_t k = 0; k < m; ++k)
-    for(int i = 0; i <= d; ++i) {
-      if(in.elements[k][i] >= n)
-        throw std::invalid_argument("element " + std::to_string(k) + " refers to vertex " + std::to_string(in.elements[k][i]) + ", the mesh has " + std::to_string(n));
-      for(int j = 0; j < i; ++j)
-        if(in.elements[k][i] == in.elements[k][j])
-          throw std::invalid_argument("element " + std::to_string(k) + " repeats vertex " + std::to_string(in.elements[k][i]));
-      if(!in.targets.empty() && !in.targets[k][i].allFinite())
-        throw std::invalid_argument("target of element " + std::to_string(k) + " has a non-finite coordinate");
-    }
+  const std::size_t mesh_m = in.number_of_mesh_elements();
 
   Untangling_problem<d> P;
   P.number_of_vertices = n;
@@ -229,17 +272,12 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
 
   // Target scale.
   const bool given = !in.targets.empty();
-  if(scaling == Target_scaling::AUTOMATIC) {
-    const std::vector<char> on_boundary = boundary_vertices<d>(n, in.elements);
-    bool boundary_fixed = true;
-    for(std::size_t v = 0; v < n; ++v)
-      if(on_boundary[v] && !P.is_fixed[v]) { boundary_fixed = false; break; }
-    scaling = (boundary_fixed || !given) ? Target_scaling::MATCH_MAP_VOLUME : Target_scaling::AS_GIVEN;
-  }
+  if(scaling == Target_scaling::AUTOMATIC)
+    scaling = (!given || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME : Target_scaling::AS_GIVEN;
   double target_factor = 1. / P.scale;     // AS_GIVEN: same units as the map
   if(scaling == Target_scaling::MATCH_MAP_VOLUME) {
     double signed_volume = 0, absolute_volume = 0, target_volume = 0;
-    for(std::size_t k = 0; k < m; ++k) {
+    for(std::size_t k = 0; k < mesh_m; ++k) {
       Target image;
       for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
       const double v = simplex_volume<d>(image) * P.reference_orientation[k];
@@ -267,6 +305,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     typename Untangling_problem<d>::Gradient_operator G;
     G.template bottomRows<d>() = Einv;
     G.row(0) = -Einv.colwise().sum();
+    if(k < mesh_m) ++P.mesh_elements;
     P.elements.push_back(e);
     P.gradient_operators.push_back(G);
     P.weights.push_back(E.determinant() / (d == 2 ? 2. : 6.));

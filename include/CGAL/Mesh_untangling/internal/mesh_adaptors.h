@@ -6,6 +6,8 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
 
+#include <CGAL/Mesh_untangling/Phantom_element.h>
+#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -16,6 +18,7 @@
 #include <CGAL/Dimension.h>
 
 #include <string>
+#include <utility>
 #include <type_traits>
 #include <vector>
 
@@ -56,27 +59,27 @@ class Face_graph_adaptor
   using vertex_descriptor = typename GT::vertex_descriptor;
 
 public:
-  explicit Face_graph_adaptor(TriangleMesh& tm) : tm_(tm)
+  explicit Face_graph_adaptor(TriangleMesh& tm) : tm_(tm), index_(get_initialized_vertex_index_map(tm))
   {
-    for(vertex_descriptor v : vertices(tm_)) vertices_.push_back(v);
+    // The mesh's own indices may have holes (a Surface_mesh with removed
+    // vertices): number the vertices in the order of vertices(tm) instead.
+    for(vertex_descriptor v : vertices(tm_)) {
+      const std::size_t j = get(index_, v);
+      if(j >= rank_.size()) rank_.resize(j + 1);
+      rank_[j] = vertices_.size();
+      vertices_.push_back(v);
+    }
   }
 
   const std::string& error() const { return error_; }
+  std::size_t index_of(vertex_descriptor v) const { return rank_[get(index_, v)]; }
+  vertex_descriptor vertex(std::size_t i) const { return vertices_[i]; }
 
   template <typename UVMap, typename DomainMap, typename FixedMap, typename TargetMap>
   Untangling_input<2> make_input(const UVMap& uv, const DomainMap& domain, const FixedMap& fixed, const TargetMap& targets)
   {
     using Domain_point = typename boost::property_traits<DomainMap>::value_type;
     constexpr int domain_dimension = Ambient_dimension<Domain_point>::value;
-    // The mesh's own indices may have holes (a Surface_mesh with removed
-    // vertices): number the vertices in the order of vertices(tm) instead.
-    auto index = get_initialized_vertex_index_map(tm_);
-    std::vector<std::size_t> rank;
-    for(std::size_t i = 0; i < vertices_.size(); ++i) {
-      const std::size_t j = get(index, vertices_[i]);
-      if(j >= rank.size()) rank.resize(j + 1);
-      rank[j] = i;
-    }
     Untangling_input<2> in;
     for(vertex_descriptor v : vertices_) {
       in.positions.push_back(to_vector<2>(get(uv, v)));
@@ -90,7 +93,7 @@ public:
       for(vertex_descriptor v : vertices_around_face(halfedge(f, tm_), tm_)) {
         if(k == 3) break;
         corners[k] = get(domain, v);
-        simplex[k++] = rank[get(index, v)];
+        simplex[k++] = index_of(v);
       }
       if(k != 3 || degree(f, tm_) != 3) {
         error_ = "face " + std::to_string(face_number) + " is not a triangle";
@@ -121,7 +124,9 @@ public:
 
 private:
   TriangleMesh& tm_;
+  decltype(get_initialized_vertex_index_map(std::declval<TriangleMesh&>())) index_;
   std::vector<vertex_descriptor> vertices_;
+  std::vector<std::size_t> rank_;   // the mesh's vertex index -> position in vertices_
   std::string error_;
 };
 
@@ -199,6 +204,40 @@ void write_back_soup(const Untangling_input<d>& in, PointRange& points)
       else p = Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]);
     }
     ++v;
+  }
+}
+
+/// The user's phantoms (`Phantom_element`s) in the core's form, through
+/// `index_of` from the user's vertex handles to the core's indices.
+template <int d, typename PhantomRange, typename IndexOf>
+Phantom_elements<d> to_phantom_elements(const PhantomRange& phantoms, const IndexOf& index_of)
+{
+  Phantom_elements<d> out;
+  for(const auto& p : phantoms) {
+    typename Phantom_elements<d>::Simplex e;
+    typename Phantom_elements<d>::Target t;
+    for(int i = 0; i <= d; ++i) {
+      e[i] = index_of(p.vertices[i]);
+      t[i] = to_vector<d>(p.target[i]);
+    }
+    out.elements.push_back(e);
+    out.targets.push_back(t);
+  }
+  return out;
+}
+
+/// Writes `phantoms` as `Phantom_element<Vertex, Point>`s through `out`.
+template <typename Vertex, typename Point, int d, typename OutputIterator, typename VertexOf>
+void output_phantom_elements(const Phantom_elements<d>& phantoms, OutputIterator out, const VertexOf& vertex_of)
+{
+  for(std::size_t k = 0; k < phantoms.elements.size(); ++k) {
+    Phantom_element<Vertex, Point> p;
+    for(int i = 0; i <= d; ++i) {
+      p.vertices[i] = vertex_of(phantoms.elements[k][i]);
+      if constexpr(d == 2) p.target[i] = Point(phantoms.targets[k][i][0], phantoms.targets[k][i][1]);
+      else p.target[i] = Point(phantoms.targets[k][i][0], phantoms.targets[k][i][1], phantoms.targets[k][i][2]);
+    }
+    *out++ = p;
   }
 }
 

@@ -20,11 +20,12 @@
 // winds exactly once (a 3- or 4-star cannot wind twice with angles below π).
 //
 // Phantoms are plain elements with their own targets, appended to the
-// Untangling_input: no new unknowns, no change to the energy.  The
-// invertibility checks must then run on the mesh's own elements only.
+// Untangling_input (Phantom_elements.h): no new unknowns, no change to the
+// energy; the verdict is taken on the mesh's own elements only.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TRIANGLES_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TRIANGLES_H
 
+#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 #include <CGAL/Mesh_untangling/internal/star_aggregation.h>
 #include <CGAL/Mesh_untangling/internal/star_flattening.h>
@@ -254,55 +255,15 @@ compute_phantom_triangles(std::size_t number_of_vertices,
   return phantoms;
 }
 
-/// The targets make_untangling_problem() would use when none is given:
-/// regular triangles, oriented like most of the map, scaled so that their
-/// total area is the map's (signed, or absolute when that is nearly zero).
-/// With them given explicitly the untangling is the same (AUTOMATIC scaling
-/// then keeps them as given on free-boundary problems).
-inline std::vector<std::array<Eigen::Vector2d, 3>> default_targets(const Untangling_input<2>& in)
+/// The phantoms in the form the core takes.
+inline Phantom_elements<2> as_phantom_elements(const std::vector<Phantom_triangle>& phantoms)
 {
-  const bool negative = map_volume_sign<2>(in) < 0;
-  double signed_area = 0, absolute_area = 0;
-  for(const auto& e : in.elements) {
-    const double a = simplex_volume<2>(std::array<Eigen::Vector2d, 3>{in.positions[e[0]], in.positions[e[1]], in.positions[e[2]]});
-    signed_area += negative ? -a : a;
-    absolute_area += std::abs(a);
-  }
-  const double wanted = signed_area > 1e-3 * absolute_area ? signed_area : absolute_area;
-  const double factor = wanted > 0 && !in.elements.empty() ? std::sqrt(wanted / double(in.elements.size())) : 1.;
-  auto t = regular_simplex<2>();
-  for(auto& p : t) p *= factor;
-  if(negative) std::swap(t[0], t[1]);
-  return std::vector<std::array<Eigen::Vector2d, 3>>(in.elements.size(), t);
-}
-
-/// Appends `phantoms` to `in` as extra elements with their targets (filling
-/// the mesh's targets with default_targets() first when there are none).
-/// Returns the number of mesh elements: in.elements[0, returned value) are
-/// the mesh's own, the checks of the result must run on those only.
-inline std::size_t append_phantom_triangles(Untangling_input<2>& in, const std::vector<Phantom_triangle>& phantoms)
-{
-  const std::size_t mesh_elements = in.elements.size();
-  if(phantoms.empty()) return mesh_elements;
-  if(in.targets.empty()) in.targets = default_targets(in);
-  in.elements.reserve(mesh_elements + phantoms.size());
-  in.targets.reserve(mesh_elements + phantoms.size());
+  Phantom_elements<2> out;
   for(const Phantom_triangle& p : phantoms) {
-    in.elements.push_back(p.vertices);
-    in.targets.push_back(p.target);
+    out.elements.push_back(p.vertices);
+    out.targets.push_back(p.target);
   }
-  return mesh_elements;
-}
-
-/// Computes the phantoms of the mesh in `in` (its elements, targets and
-/// fixed flags) and appends them; returns the number of mesh elements.
-inline std::size_t add_phantom_triangles(Untangling_input<2>& in, Phantom_statistics* statistics = nullptr,
-                                         const Phantom_options& options = Phantom_options())
-{
-  if(in.targets.empty() && !in.elements.empty()) in.targets = default_targets(in);
-  const auto phantoms = compute_phantom_triangles(in.positions.size(), in.elements, in.targets, in.is_fixed,
-                                                  statistics, options);
-  return append_phantom_triangles(in, phantoms);
+  return out;
 }
 
 } // namespace internal

@@ -1,0 +1,74 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Which phantom elements protect a problem: the user's, or the ones the
+// package builds when some boundary vertex is free (with a fixed boundary a
+// star cannot wind twice without an inverted element, so none are needed).
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
+
+#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantom_triangles.h>
+
+#include <optional>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// What a front end asks for.
+template <int d>
+struct Protection_request
+{
+  bool enabled = true;                                  ///< build phantoms when some boundary vertex is free
+  std::optional<Phantom_elements<d>> supplied;          ///< the user's phantoms, used as given (even with `enabled` false)
+};
+
+/// What protected a run.
+struct Protection_summary
+{
+  std::size_t phantom_elements = 0;
+  std::size_t phantom_vertices = 0;
+  std::size_t incomplete_stars = 0;   ///< stars the construction could not reduce to a basic star
+};
+
+/// The phantom triangles of the 2D problem `in`, built on its targets (each
+/// target laid flat is the rest shape of its triangle; stars are made flat
+/// around each vertex from their angles).
+inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in, Protection_summary& summary)
+{
+  Phantom_statistics statistics;
+  const auto phantoms = compute_phantom_triangles(in.positions.size(), in.elements, in.targets, in.is_fixed, &statistics);
+  summary.incomplete_stars = statistics.incomplete_stars;
+  return as_phantom_elements(phantoms);
+}
+
+/// 3D: phantom tetrahedra are not built yet; only supplied ones protect.
+inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>&, Protection_summary&)
+{
+  return Phantom_elements<3>();
+}
+
+/// Appends the phantoms that `request` calls for to `in` (mesh targets are
+/// filled with default ones first when there are none, since phantom targets
+/// are sized against them).  Throws std::invalid_argument on malformed
+/// supplied phantoms.
+template <int d>
+Protection_summary protect_boundary(Untangling_input<d>& in, const Protection_request<d>& request)
+{
+  Protection_summary summary;
+  const bool build = !request.supplied && request.enabled && has_free_boundary_vertex<d>(in);
+  if(!build && !request.supplied) return summary;
+  if(in.targets.empty()) in.targets = default_targets<d>(in);
+  const Phantom_elements<d> phantoms = request.supplied ? *request.supplied : build_phantom_elements(in, summary);
+  append_phantom_elements<d>(in, phantoms);
+  summary.phantom_elements = phantoms.elements.size();
+  summary.phantom_vertices = phantoms.extra_vertices.size();
+  return summary;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
