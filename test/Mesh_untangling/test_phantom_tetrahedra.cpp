@@ -244,6 +244,26 @@ static void fixed_vertices()
   }
 }
 
+/// A fixed boundary is prescribed: its stars and edges get no phantom (they
+/// cannot fold, and closing them would confine the free vertices near them).
+static void prescribed_boundary()
+{
+  Points rest; Tets tets;
+  const std::size_t n = 3;
+  cube(n, rest, tets);
+  std::vector<bool> fixed(rest.size());
+  for(std::size_t v = 0; v < rest.size(); ++v)
+    fixed[v] = rest[v].minCoeff() == 0 || rest[v].maxCoeff() == 1;
+  MI::Phantom_statistics_3 stats;
+  const auto ph = MI::compute_phantom_tetrahedra(rest, tets, fixed, rest, &stats);
+  check_invariants(rest, tets, fixed, ph, stats);
+  CHECK(stats.prescribed_boundary_vertices == 6 * n * n + 2);
+  CHECK(stats.prescribed_boundary_edges == stats.boundary_edges);
+  CHECK(stats.regular_boundary_vertices + stats.irregular_boundary_vertices == 0);
+  CHECK(ph.extra_vertices.empty());
+  CHECK(stats.interior_edges > 0);
+}
+
 /// The rest orientation of each tetrahedron is its positive one; the order
 /// of the tetrahedra does not matter; two runs give the same output.
 static void deterministic()
@@ -310,6 +330,7 @@ int main()
   irregular_vertices();
   phantom_vertex_follows_the_map();
   fixed_vertices();
+  prescribed_boundary();
   deterministic();
   bad_input();
   if(test::exit_code() == 0) std::cout << "all phantom tetrahedra tests passed\n";
