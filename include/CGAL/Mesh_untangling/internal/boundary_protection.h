@@ -8,7 +8,12 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
 
 #include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantom_tetrahedra.h>
 #include <CGAL/Mesh_untangling/internal/phantom_triangles.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
 
 #include <optional>
 
@@ -43,10 +48,37 @@ inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in,
   return as_phantom_elements(phantoms);
 }
 
-/// 3D: phantom tetrahedra are not built yet; only supplied ones protect.
-inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>&, Protection_summary&)
+/// The phantom tetrahedra of the 3D problem `in`, built in the rest
+/// geometry its targets describe.  Targets taken from a rest shape
+/// (`rest_point_map`, `rest_points`) agree at shared vertices and give it;
+/// targets that disagree (per-cell targets, the default regular ones) give
+/// no geometry to build in: then no phantoms are made and every boundary
+/// vertex counts as an incomplete star.
+inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in, Protection_summary& summary)
 {
-  return Phantom_elements<3>();
+  const std::size_t n = in.positions.size(), m = in.elements.size();
+  std::vector<Eigen::Vector3d> rest(in.positions);   // vertices in no element keep their map position
+  std::vector<char> seen(n, 0);
+  double extent = 0;
+  for(const auto& t : in.targets)
+    for(const auto& p : t) extent = std::max(extent, p.cwiseAbs().maxCoeff());
+  const double tolerance = 1e-9 * (extent > 0 ? extent : 1.);
+  bool consistent = in.targets.size() == m;
+  for(std::size_t k = 0; k < m && consistent; ++k)
+    for(int i = 0; i < 4; ++i) {
+      const std::size_t v = in.elements[k][i];
+      if(!seen[v]) { rest[v] = in.targets[k][i]; seen[v] = 1; }
+      else if(!((rest[v] - in.targets[k][i]).cwiseAbs().maxCoeff() <= tolerance)) { consistent = false; break; }
+    }
+  if(!consistent) {
+    const std::vector<char> boundary = boundary_vertices<3>(n, in.elements);
+    summary.incomplete_stars = std::size_t(std::count(boundary.begin(), boundary.end(), 1));
+    return Phantom_elements<3>();
+  }
+  Phantom_statistics_3 statistics;
+  Phantom_elements<3> phantoms = compute_phantom_tetrahedra(rest, in.elements, in.is_fixed, in.positions, &statistics);
+  summary.incomplete_stars = statistics.incomplete_stars;
+  return phantoms;
 }
 
 /// Appends the phantoms that `request` calls for to `in` (mesh targets are

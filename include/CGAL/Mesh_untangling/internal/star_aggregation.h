@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -65,12 +66,30 @@ inline double covering_quality(const Eigen::Vector2d& pa, const Eigen::Vector2d&
   return shape * std::min(triangle, quadrilateral) / std::max(triangle, quadrilateral);
 }
 
+/// The quality measures aggregate_sequence() ranks candidates with, for a
+/// star laid flat: `shape(a, b)` is the mean ratio of the phantom (centre, a, b)
+/// and `covering(a, m, b, shape)` the covering_quality() of the pair it replaces.
+/// Another measure (3D edge fans) provides the same two functions.
+struct Flat_star_quality
+{
+  double shape(const Star_node& a, const Star_node& b) const
+  {
+    return mean_ratio<2>(std::array<Eigen::Vector2d, 3>{Eigen::Vector2d::Zero(), a.point(), b.point()});
+  }
+  double covering(const Star_node& a, const Star_node& m, const Star_node& b, double& shape) const
+  {
+    return covering_quality(a.point(), m.point(), b.point(), shape);
+  }
+};
+
 /// Aggregates the sequence `nodes` (cyclic or linear) level by level until it
 /// has at most `wanted` nodes, appending the phantom triangles to `out`.  At
 /// each level every candidate triple (p_i, p_i+1, p_i+2) whose middle node may
 /// be dropped, whose new edge does not join two fixed nodes and whose triangle
 /// (c, p_i, p_i+2) is positively oriented (centre angle below the limit) and
-/// not degenerate is ranked by covering_quality(); ties (to 1e-9) go to the
+/// not degenerate is ranked by `quality_of.covering()` (see
+/// Flat_star_quality, the 2D measure; 3D edge fans measure the phantom
+/// tetrahedron instead); ties (to 1e-9) go to the
 /// smaller position.  The best are taken greedily while their middles are
 /// pairwise non-adjacent (the pairs of triangles do not overlap) and the
 /// sequence stays at least `wanted` long.  Returns false when no candidate is
@@ -80,8 +99,10 @@ inline double covering_quality(const Eigen::Vector2d& pa, const Eigen::Vector2d&
 /// goes and false is returned.
 /// `levels` receives the number of levels used.  O(k log k) for k nodes in
 /// practice: each level removes a constant fraction of the nodes.
-inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double turn, std::size_t wanted,
-                               const Aggregation_criteria& criteria, std::vector<Aggregated_triangle>& out, int& levels)
+template <class Quality>
+bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double turn, std::size_t wanted,
+                        const Aggregation_criteria& criteria, const Quality& quality_of,
+                        std::vector<Aggregated_triangle>& out, int& levels)
 {
   struct Candidate { std::int64_t key; std::size_t position; };
   std::vector<Candidate> candidates;
@@ -98,15 +119,13 @@ inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double
     const std::size_t size = nodes.size();
     const double first = nodes.front().theta, last = nodes.back().theta;
     if(!(last - first < criteria.max_centre_angle)) {
-      const Eigen::Vector2d o = Eigen::Vector2d::Zero(), p0 = nodes.front().point(), p1 = nodes.back().point();
       std::size_t pivot = 0;
       double best = -1;
       for(std::size_t j = 1; j + 1 < size; ++j) {
         if(!(nodes[j].theta - first < criteria.max_centre_angle && last - nodes[j].theta < criteria.max_centre_angle)) continue;
-        const Eigen::Vector2d pj = nodes[j].point();
         double score = 1;   // a final triangle that is a mesh triangle needs no phantom
-        if(j >= 2) score = std::min(score, mean_ratio<2>(std::array<Eigen::Vector2d, 3>{o, p0, pj}));
-        if(j + 2 < size) score = std::min(score, mean_ratio<2>(std::array<Eigen::Vector2d, 3>{o, pj, p1}));
+        if(j >= 2) score = std::min(score, quality_of.shape(nodes.front(), nodes[j]));
+        if(j + 2 < size) score = std::min(score, quality_of.shape(nodes[j], nodes.back()));
         if(!(score >= criteria.min_quality)) continue;
         if(score > best) { pivot = j; best = score; }
       }
@@ -127,7 +146,7 @@ inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double
       const double angle = gap(i, mid) + gap(mid, j);
       if(!(angle > 0 && angle < criteria.max_centre_angle)) continue;
       double shape = 0;
-      const double quality = covering_quality(nodes[i].point(), nodes[mid].point(), nodes[j].point(), shape);
+      const double quality = quality_of.covering(nodes[i], nodes[mid], nodes[j], shape);
       if(!(shape >= criteria.min_quality)) continue;
       candidates.push_back({std::int64_t(std::llround(quality * 1e9)), i});
     }
@@ -159,6 +178,13 @@ inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double
     keep.resize(kept);
   }
   return reachable;
+}
+
+/// The 2D aggregation: the flattened triangles are the phantoms' targets.
+inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double turn, std::size_t wanted,
+                               const Aggregation_criteria& criteria, std::vector<Aggregated_triangle>& out, int& levels)
+{
+  return aggregate_sequence(std::move(nodes), cyclic, turn, wanted, criteria, Flat_star_quality(), out, levels);
 }
 
 } // namespace internal

@@ -1,0 +1,38 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The rotated-cavities stress test of the paper (§4, Figure 16): an
+// isotropic tetrahedral mesh of a cuboid with two cubic cavities; the map
+// turns the boundary of each cavity by 135° about the vertical axis through
+// its centre, which inverts the tetrahedra around it.  The cavity boundaries
+// are fixed, the outer boundary is free, the other vertices start at rest.
+//
+// Meshed with TetGen, which is AGPL: this file and its library are for the
+// tests, examples and benchmark only, never for the package's headers.
+#ifndef MESH_UNTANGLING_TOOLS_CAVITIES_H
+#define MESH_UNTANGLING_TOOLS_CAVITIES_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+
+namespace Mesh_untangling_tools {
+
+struct Cavities_options
+{
+  /// target edge length of the isotropic mesh (the cuboid is 4 × 2 × 2, the cavities are unit cubes)
+  double mesh_size = 0.25;
+  /// rotation of each cavity boundary about its vertical axis, in degrees
+  double rotation_degrees = 135;
+};
+
+/// The cuboid [0,4] × [0,2] × [0,2] without the unit cubes centred at
+/// (1,1,1) and (3,1,1), meshed by TetGen (quality bound 1.4 on the
+/// radius-edge ratio, volume bound of a regular tetrahedron of edge
+/// `mesh_size`).  Returns a Mesh_file with `rest` (the mesh), `map` (cavity
+/// boundaries rotated), positively oriented `simplices` and the cavity
+/// boundary vertices as `fixed`.  Deterministic.  Throws std::runtime_error
+/// when TetGen fails, std::invalid_argument on a size that is not in (0, 1].
+CGAL::Mesh_untangling::IO::Mesh_file make_cavities_problem(const Cavities_options& options = Cavities_options());
+
+} // namespace Mesh_untangling_tools
+
+#endif // MESH_UNTANGLING_TOOLS_CAVITIES_H
