@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <optional>
 #include <utility>
 
@@ -32,6 +33,7 @@ struct Arguments
 {
   std::string input, rest, fixed, output, report, solver = "newton", init = "given";
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
+  std::string phantoms;         // the phantom elements used, as a mesh
   bool fix_boundary = false, quiet = false, no_phantoms = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
@@ -40,11 +42,11 @@ struct Arguments
 /// Bad usage or input: reported, nothing written, exit code 2.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
-std::string lowercase_extension(const std::string& path)
+using IO::internal::lowercase_extension;
+
+bool is_mesh_extension(const std::string& ext)
 {
-  std::string e = fs::path(path).extension().string();
-  for(char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
+  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".mesh" || ext == ".input";
 }
 
 std::string default_output(const std::string& input)
@@ -62,43 +64,39 @@ bool same_file(const std::string& a, const std::string& b)
   return !ec && na == nb;
 }
 
-/// Every file read must survive the run, and the two outputs must not collide;
+/// Every file read must survive the run, and no two outputs may collide;
 /// checked before untangling, so that a bad path costs no time and writes nothing.
 void check_output_paths(const Arguments& args)
 {
   const std::string ext = lowercase_extension(args.output);
-  if(ext != ".obj" && ext != ".off" && ext != ".vtk" && ext != ".mesh" && ext != ".input")
+  if(!is_mesh_extension(ext))
     throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
                       "' (supported: .obj .off .vtk .mesh .input)");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
-  for(const std::string* output : {&args.output, &args.report, &args.svg, &args.svg_input}) {
-    if(output->empty()) continue;
+  const std::pair<const char*, const std::string*> outputs[] = {
+    {"the result", &args.output}, {"the report", &args.report}, {"--svg", &args.svg},
+    {"--svg-input", &args.svg_input}, {"--phantoms", &args.phantoms}};
+  for(std::size_t i = 0; i < std::size(outputs); ++i) {
+    const std::string& output = *outputs[i].second;
+    if(output.empty()) continue;
     for(const auto& in : inputs)
-      if(!in.second->empty() && same_file(*in.second, *output))
-        throw Usage_error(*output + ": refusing to overwrite " + in.first);
+      if(!in.second->empty() && same_file(*in.second, output))
+        throw Usage_error(output + ": refusing to overwrite " + in.first);
     std::error_code ec;
-    const fs::path dir = fs::path(*output).parent_path();
+    const fs::path dir = fs::path(output).parent_path();
     if(!dir.empty() && !fs::is_directory(dir, ec))
-      throw Usage_error(*output + ": directory '" + dir.string() + "' does not exist");
-    if(fs::is_directory(*output, ec))
-      throw Usage_error(*output + ": is a directory");
+      throw Usage_error(output + ": directory '" + dir.string() + "' does not exist");
+    if(fs::is_directory(output, ec))
+      throw Usage_error(output + ": is a directory");
+    for(std::size_t j = 0; j < i; ++j)
+      if(!outputs[j].second->empty() && same_file(*outputs[j].second, output))
+        throw Usage_error(output + ": " + outputs[j].first + " and " + outputs[i].first + " would be the same file");
   }
-  if(!args.report.empty() && same_file(args.report, args.output))
-    throw Usage_error(args.report + ": the report and the result would be the same file");
-  const std::pair<const char*, const std::string*> pictures[] = {
-    {"--svg", &args.svg}, {"--svg-input", &args.svg_input}};
-  for(const auto& picture : pictures) {
-    const std::string& path = *picture.second;
-    if(path.empty()) continue;
-    if(lowercase_extension(path) != ".svg")
-      throw Usage_error(path + ": " + picture.first + " writes an SVG picture: give a .svg file");
-    if(same_file(path, args.output) || (!args.report.empty() && same_file(path, args.report)))
-      throw Usage_error(path + ": " + picture.first + " would overwrite the " +
-                        (same_file(path, args.output) ? "result" : "report"));
-  }
-  if(!args.svg.empty() && !args.svg_input.empty() && same_file(args.svg, args.svg_input))
-    throw Usage_error(args.svg + ": --svg and --svg-input would be the same file");
+  for(const std::string* picture : {&args.svg, &args.svg_input})
+    if(!picture->empty() && lowercase_extension(*picture) != ".svg")
+      throw Usage_error(*picture + ": " + (picture == &args.svg ? "--svg" : "--svg-input") +
+                        " writes an SVG picture: give a .svg file");
 }
 
 /// Pictures are drawn for 2D maps only.
@@ -172,6 +170,20 @@ void check_output_format(const std::string& output, const Mesh_file& mesh)
     throw Usage_error(output + ": the .input format needs rest positions (give --rest)");
 }
 
+/// The phantoms are written with the map's positions alone: no rest.
+void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
+{
+  if(args.phantoms.empty()) return;
+  if(args.no_phantoms)
+    throw Usage_error(args.phantoms + ": --phantoms writes the phantom elements, but --no-phantoms switches them off");
+  const std::string ext = lowercase_extension(args.phantoms);
+  if(!is_mesh_extension(ext) || ext == ".input")
+    throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .mesh, .off "
+                      "or .obj file (.vtk carries the fields)");
+  if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
+    throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk or .mesh)");
+}
+
 /// What is written: OBJ keeps the domain in v and the map in vt.
 Mesh_file output_content(const Mesh_file& mesh, const std::string& output)
 {
@@ -181,6 +193,14 @@ Mesh_file output_content(const Mesh_file& mesh, const std::string& output)
     out.rest_dimension = out.map_dimension;
   }
   return out;
+}
+
+/// Writes `mesh` to `path` as output_content(), with the fields when the format is VTK.
+void write_with_fields(const std::string& path, const Mesh_file& mesh, const IO::VTK_fields& cells,
+                       const IO::VTK_fields& points)
+{
+  if(lowercase_extension(path) == ".vtk") IO::write_VTK(path, mesh, cells, points);
+  else IO::write_mesh_file(path, output_content(mesh, path));
 }
 
 /// The map as it reads back from the written file.
@@ -201,7 +221,8 @@ struct Checks
 };
 
 void write_report(IO::internal::Atomic_output_file& file, const Arguments& args, const std::string& fixed_source,
-                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v, const Checks& c)
+                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v, const Checks& c,
+                  std::size_t phantoms_not_positive)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -218,6 +239,8 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["phantom_elements"] = r.number_of_phantom_elements;
   j["phantom_vertices"] = r.number_of_phantom_vertices;
   j["incomplete_phantom_stars"] = r.incomplete_phantom_stars;
+  j["phantom_elements_not_positive_after"] = phantoms_not_positive;
+  j["phantoms_output"] = args.phantoms.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.phantoms);
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : (mesh.simplex_size == 3 ? 1. / 128 : 0.5);
   j["status"] = MU::to_string(r.status);
@@ -257,19 +280,8 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   file.commit();
 }
 
-int run(const Arguments& args)
+Run_options run_options(const Arguments& args)
 {
-  if(args.output.empty()) throw Usage_error("no output file");
-  if(!args.fixed.empty() && args.fix_boundary)
-    throw Usage_error("--fixed and --fix-boundary exclude each other");
-
-  Mesh_file mesh = read_problem(args);
-  check_output_paths(args);
-  std::string fixed_source;
-  const std::vector<bool> fixed = fixed_vertices(args, mesh, fixed_source);
-  check_output_format(args.output, mesh);
-  check_pictures(args, mesh);
-
   Run_options options;
   options.solver = args.solver;
   options.theta = args.theta;
@@ -282,47 +294,101 @@ int run(const Arguments& args)
                    s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds,
                    s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "");
     };
-  Checks checks;
-  checks.before = check_mesh_file(mesh, fixed);
-  checks.boundary_before = check_boundary_of_mesh_file(mesh);
-  std::optional<Svg_map> input_picture;
-  if(!args.svg_input.empty()) {
-    input_picture = svg_map_of(mesh, fixed);
-    input_picture->title = args.input + " (input)";
-  }
-  const MU::Untangling_result result = untangle_mesh_file(mesh, fixed, options);
+  return options;
+}
 
-  // The temporary files of the report and the pictures are opened first: if
-  // one cannot be created, nothing is written at all.
+/// What the outputs are made of besides the untangled mesh.
+struct Run
+{
+  std::string fixed_source;
+  std::vector<bool> fixed;
+  Checks checks;
+  std::optional<Svg_map> input_picture;
+  MU::Untangling_result result;
+  Run_record record;
+};
+
+/// Writes every output and returns the verdict on the result as written.
+Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run)
+{
+  // Fields are measured on the coordinates as written: the writers print
+  // the shortest text that reads back to the same doubles.
+  std::optional<Map_fields> fields;
+  if(lowercase_extension(args.output) == ".vtk") fields = measure_map(mesh, run.fixed, run.record);
+  std::optional<Phantom_mesh> phantoms;
+  if(!run.record.phantom_simplices.empty() || !args.phantoms.empty()) phantoms = phantom_mesh(mesh, run.record);
+
+  // The temporary files of the report and the pictures are opened first, and
+  // the phantoms written before the result: if one of them cannot be
+  // created, nothing is written at all.
   std::optional<IO::internal::Atomic_output_file> report, svg, svg_input;
   if(!args.report.empty()) report.emplace(args.report);
   if(!args.svg.empty()) svg.emplace(args.svg);
   if(!args.svg_input.empty()) svg_input.emplace(args.svg_input);
-  IO::write_mesh_file(args.output, output_content(mesh, args.output));
+  if(!args.phantoms.empty()) write_with_fields(args.phantoms, phantoms->mesh, phantoms->cells, phantoms->points);
+  write_with_fields(args.output, mesh, fields ? fields->cells : IO::VTK_fields(),
+                    fields ? fields->points : IO::VTK_fields());
   const Mesh_file written = as_written(mesh, args.output);
-  const Verdict verdict = check_mesh_file(written, fixed);
-  checks.boundary_after = check_boundary_of_mesh_file(written);
+  const Verdict verdict = fields && written.map == mesh.map ? fields->verdict : check_mesh_file(written, run.fixed);
+  run.checks.boundary_after = check_boundary_of_mesh_file(written);
   if(svg_input) {
-    write_svg(svg_input->stream(), *input_picture);
+    write_svg(svg_input->stream(), *run.input_picture);
     svg_input->commit();
   }
   if(svg) {
-    Svg_map picture = svg_map_of(written, fixed);
+    Svg_map picture = svg_map_of(written, run.fixed);
+    add_phantom_overlay(picture, run.record);
     picture.title = args.output + " (result, as written)";
     write_svg(svg->stream(), picture);
     svg->commit();
   }
-  if(report) write_report(*report, args, fixed_source, mesh, result, verdict, checks);
+  if(report)
+    write_report(*report, args, run.fixed_source, mesh, run.result, verdict, run.checks,
+                 phantoms ? phantoms->not_positive : 0);
+  return verdict;
+}
 
-  if(!args.quiet)
+void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run, const Verdict& verdict)
+{
+  if(!args.quiet) {
+    const MU::Untangling_result& r = run.result;
     std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, "
                  "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
-                 result.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
-                 verdict.input_defects, result.number_of_phantom_elements, result.seconds);
-  if(!args.quiet)
+                 r.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
+                 verdict.input_defects, r.number_of_phantom_elements, r.seconds);
     std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
-                 mesh.simplex_size == 3 ? "edges" : "triangles", checks.boundary_before.intersecting_pairs,
-                 checks.boundary_after.intersecting_pairs);
+                 mesh.simplex_size == 3 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
+                 run.checks.boundary_after.intersecting_pairs);
+  }
+  // Said even with --quiet: the file asked for holds less than one may think.
+  if(!args.phantoms.empty() && run.record.phantom_simplices.empty())
+    std::fprintf(stderr, "untangle_mesh: note: no phantom element was used (no free boundary vertex, or none "
+                 "could be built); %s holds the vertices only\n", args.phantoms.c_str());
+}
+
+int run(const Arguments& args)
+{
+  if(args.output.empty()) throw Usage_error("no output file");
+  if(!args.fixed.empty() && args.fix_boundary)
+    throw Usage_error("--fixed and --fix-boundary exclude each other");
+
+  Mesh_file mesh = read_problem(args);
+  check_output_paths(args);
+  Run run;
+  run.fixed = fixed_vertices(args, mesh, run.fixed_source);
+  check_output_format(args.output, mesh);
+  check_pictures(args, mesh);
+  check_phantoms_output(args, mesh);
+
+  run.checks.before = check_mesh_file(mesh, run.fixed);
+  run.checks.boundary_before = check_boundary_of_mesh_file(mesh);
+  if(!args.svg_input.empty()) {
+    run.input_picture = svg_map_of(mesh, run.fixed);
+    run.input_picture->title = args.input + " (input)";
+  }
+  run.result = untangle_mesh_file(mesh, run.fixed, run_options(args), &run.record);
+  const Verdict verdict = write_outputs(args, mesh, run);
+  print_summary(args, mesh, run, verdict);
   return verdict.locally_invertible ? 0 : 1;
 }
 
@@ -338,7 +404,8 @@ int main(int argc, char** argv)
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
   auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based)");
   app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
-  app.add_option("-o,--output", args.output, "result (format by extension); default: INPUT-untangled.EXT");
+  app.add_option("-o,--output", args.output, "result (format by extension; .vtk adds per-cell det J, distortions and "
+                 "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");
   app.add_option("--report", args.report, "JSON report with every figure");
   app.add_option("--solver", args.solver, "inner solver")->check(CLI::IsMember({"newton", "lbfgs"}));
   app.add_option("--theta", args.theta, "size/shape trade-off in [0, 1]; default 1/128 (2D), 1/2 (3D)")
@@ -351,8 +418,10 @@ int main(int argc, char** argv)
   app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (the published scheme: "
                "no inverted element, but stars may be covered twice)");
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
-                 "triangles red, over-wound vertices circled, boundary crossings marked");
+                 "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");
+  app.add_option("--phantoms", args.phantoms, "the phantom elements used, on the final map: .vtk (with a 'positive' "
+                 "cell field), .mesh, .off or .obj");
   app.add_flag("-q,--quiet", args.quiet, "no progress on stderr");
   try {
     app.parse(argc, argv);

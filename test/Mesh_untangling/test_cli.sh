@@ -96,6 +96,29 @@ handle_rows() {
     { for (i = 1; i <= NF; ++i) { if (!seen_count) { seen_count = 1; continue } print $i row[$i] } }
   ' "$1"
 }
+# vtk_field FILE NAME: the values of the scalar field NAME, one per line.
+vtk_field() {
+  awk -v name="$2" '
+    $1 == "SCALARS" { on = ($2 == name); next }
+    $1 == "LOOKUP_TABLE" { next }
+    $1 == "POINT_DATA" || $1 == "CELL_DATA" { on = 0 }
+    on { print }' "$1"
+}
+vtk_count() { vtk_field "$1" "$2" | wc -l | tr -d ' '; }
+vtk_sum() { vtk_field "$1" "$2" | awk '{ s += $1 } END { print s + 0 }'; }
+vtk_min() { vtk_field "$1" "$2" | awk 'NR == 1 || $1 < m { m = $1 } END { printf "%.17g\n", m }'; }
+vtk_header() { awk -v key="$2" '$1 == key { print $2; exit }' "$1"; }
+# vtk_fields_sized FILE SIZE NAME...: every field NAME has SIZE values.
+vtk_fields_sized() {
+  local file=$1 size=$2
+  shift 2
+  local name
+  for name in "$@"; do [ "$(vtk_count "$file" "$name")" = "$size" ] || return 1; done
+}
+# close A B: |A - B| <= 1e-9 max(1, |B|)
+close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; if (m < 1) m = 1; exit !(a != "" && d <= 1e-9 * m) }'; }
+cell_fields="det_J shape_distortion volume_distortion inverted input_defect"
+
 handle_count() { awk 'NR == 1 { n = $1 } NR == 2 * n + 3 { s = $1 } NR == 2 * n + 4 + s { print $1; exit }' "$1"; }
 map_rows() { awk 'NR == 1 { n = $1 } NR > n + 2 && NR <= 2 * n + 2' "$1"; }
 
@@ -147,9 +170,22 @@ check "--quiet: stderr empty" empty quiet.err
 check "--quiet: stdout empty" empty quiet.out
 
 # Output formats; each re-reads.
-run sq_vtk small.input -o out.vtk -q
+run sq_vtk small.input -o out.vtk --report out_vtk.json -q
 check "-o out.vtk: exit 0" rc_is sq_vtk 0
 check "-o out.vtk: legacy VTK header" grep -q '^# vtk DataFile' out.vtk
+# Fields for ParaView: per cell and per point, as many values as cells and points.
+check "-o out.vtk: CELL_DATA 288" [ "$(vtk_header out.vtk CELL_DATA)" = 288 ]
+check "-o out.vtk: POINT_DATA 169" [ "$(vtk_header out.vtk POINT_DATA)" = 169 ]
+check "-o out.vtk: 288 values per cell field" vtk_fields_sized out.vtk 288 $cell_fields
+check "-o out.vtk: 169 values per point field" vtk_fields_sized out.vtk 169 fixed overwound covering
+check "-o out.vtk: flags are int" grep -q '^SCALARS inverted int 1$' out.vtk
+check "-o out.vtk: fixed flags = fixed_vertices" [ "$(vtk_sum out.vtk fixed)" = "$(json_get out_vtk.json fixed_vertices)" ]
+check "-o out.vtk: inverted flags = inverted_after" [ "$(vtk_sum out.vtk inverted)" = "$(json_get out_vtk.json inverted_after)" ]
+check "-o out.vtk: min det_J = min_scaled_det_after" \
+  close "$(vtk_min out.vtk det_J)" "$(json_get out_vtk.json min_scaled_det_after)"
+check "-o out.vtk: no overwound vertex" [ "$(vtk_sum out.vtk overwound)" = 0 ]
+check "-o out.vtk: no edge field in 2D" [ "$(vtk_count out.vtk overwound_edges)" = 0 ]
+check "-o out.vtk: phantoms_output null" json_is out_vtk.json phantoms_output null
 run sq_vtk_back out.vtk --rest small.input -o back.vtk --report back_vtk.json -q
 check "out.vtk --rest small.input: exit 0" rc_is sq_vtk_back 0
 check "out.vtk re-read: inverted_before 0" json_is back_vtk.json inverted_before 0
@@ -250,6 +286,13 @@ run cube_vtk small3d.input -o cube.vtk --report cube_vtk.json -q
 check "cube -o .vtk: exit 0" rc_is cube_vtk 0
 check "cube -o .vtk: small cube was tangled" json_positive cube_vtk.json inverted_before
 check "cube -o .vtk: tetrahedra (type 10)" grep -qx '10' cube.vtk
+check "cube -o .vtk: CELL_DATA = elements" [ "$(vtk_header cube.vtk CELL_DATA)" = "$(json_get cube_vtk.json elements)" ]
+check "cube -o .vtk: values per cell field" vtk_fields_sized cube.vtk "$(json_get cube_vtk.json elements)" $cell_fields
+check "cube -o .vtk: values per point field" \
+  vtk_fields_sized cube.vtk "$(json_get cube_vtk.json vertices)" fixed overwound covering overwound_edges
+check "cube -o .vtk: inverted flags = inverted_after" [ "$(vtk_sum cube.vtk inverted)" = "$(json_get cube_vtk.json inverted_after)" ]
+check "cube -o .vtk: min det_J = min_scaled_det_after" \
+  close "$(vtk_min cube.vtk det_J)" "$(json_get cube_vtk.json min_scaled_det_after)"
 run cube_vtk_back cube.vtk --rest small3d.input -o cube_back.mesh --report cube_back.json -q
 check "cube .vtk re-read: exit 0" rc_is cube_vtk_back 0
 check "cube .vtk re-read: inverted_before 0" json_is cube_back.json inverted_before 0
@@ -301,6 +344,9 @@ run mirror_time mirror.input --time-limit 0 -o mirror_time.vtk --report mirror_t
 check "--time-limit 0: exit 1" rc_is mirror_time 1
 check "--time-limit 0: one step" json_is mirror_time.json outer_iterations 1
 check "--time-limit 0: result written" grep -q '^CELL_TYPES 4' mirror_time.vtk
+check "--time-limit 0: inverted flags = inverted_after > 0" \
+  [ "$(vtk_sum mirror_time.vtk inverted)" = "$(json_get mirror_time.json inverted_after)" ] \
+  && json_positive mirror_time.json inverted_after
 
 #
 # Exit 2: bad usage or input. The message names the problem; nothing is
@@ -357,13 +403,27 @@ fails svg_input_dir_missing "nodir/p\.svg: directory 'nodir' does not exist" squ
 fails svg_not_svg 'p\.png: --svg writes an SVG picture: give a \.svg file' square.input --svg p.png
 fails svg_input_not_svg 'p\.vtk: --svg-input writes an SVG picture' square.input --svg-input p.vtk
 fails svg_is_input 'square\.input: refusing to overwrite the input' square.input --svg square.input
-fails svg_is_report 'p\.svg: --svg would overwrite the report' square.input --svg p.svg --report p.svg
+fails svg_is_report 'p\.svg: the report and --svg would be the same file' square.input --svg p.svg --report p.svg
 fails svg_twice 'p\.svg: --svg and --svg-input would be the same file' square.input --svg p.svg --svg-input ./p.svg
 mkdir folder.svg
 fails svg_is_directory 'folder\.svg: is a directory' square.input --svg folder.svg
 rmdir folder.svg
 head -n 20 square.input > svg_trunc.input
 fails svg_bad_input 'svg_trunc\.input:20: truncated' svg_trunc.input --svg p.svg --svg-input q.svg
+
+# Phantoms: a mesh file without rest, never over another file of the run.
+fails phantoms_off 'p\.vtk: --phantoms writes the phantom elements, but --no-phantoms switches them off' \
+  square.input --no-phantoms --phantoms p.vtk
+fails phantoms_input 'p\.input: --phantoms writes a mesh without rest positions' square.input --phantoms p.input
+fails phantoms_svg 'p\.svg: --phantoms writes a mesh without rest positions' square.input --phantoms p.svg
+fails phantoms_is_input 'square\.input: refusing to overwrite the input' square.input --phantoms square.input
+fails phantoms_is_output 'r\.vtk: the result and --phantoms would be the same file' square.input -o r.vtk --phantoms r.vtk
+fails phantoms_is_picture 'p\.svg: --svg and --phantoms would be the same file' square.input --svg p.svg --phantoms p.svg
+fails phantoms_dir_missing "nodir/p\.vtk: directory 'nodir' does not exist" square.input --phantoms nodir/p.vtk
+fails phantoms_tets_off 'p\.off: phantom tetrahedra cannot be written as \.off' cube.input -o c.vtk --phantoms p.off
+mkdir folder.vtk
+fails phantoms_is_directory 'folder\.vtk: is a directory' square.input --phantoms folder.vtk
+rmdir folder.vtk
 
 # Input never overwritten.
 sum_before=$(cksum < square.input)
@@ -456,7 +516,7 @@ awk 'BEGIN { n = 6; print "OFF"; print (n + 1) * (n + 1), 2 * n * n, 0;
   for(j = 0; j < n; ++j) for(i = 0; i < n; ++i) { a = j * (n + 1) + i;
     print 3, a, a + 1, a + n + 2; print 3, a, a + n + 2, a + n + 1 } }' > surface.off
 surface_sum=$(cksum < surface.off)
-run flat surface.off --init project -o flat.obj --report flat.json -q
+run flat surface.off --init project -o flat.obj --report flat.json --phantoms flat-phantoms.vtk --svg flat.svg -q
 check "flatten: exit 0" rc_is flat 0
 check "flatten: initial map is the projection" json_is flat.json initial_map '"projection on the best-fit plane"'
 check "flatten: phantoms used" json_positive flat.json phantom_elements
@@ -466,6 +526,43 @@ check "flatten: 0 fixed" json_is flat.json fixed_vertices 0
 check "flatten: OBJ keeps the surface in v" [ "$(grep -c '^v ' flat.obj)" = 49 ]
 check "flatten: OBJ has the map in vt" [ "$(grep -c '^vt ' flat.obj)" = 49 ]
 check "flatten: input unchanged" [ "$(cksum < surface.off)" = "$surface_sum" ]
+# --phantoms: the phantom triangles on the final map, with the mesh's vertices.
+check "flatten --phantoms: reported" json_is flat.json phantoms_output '"flat-phantoms.vtk"'
+check "flatten --phantoms: one cell per phantom" \
+  [ "$(vtk_header flat-phantoms.vtk CELLS)" = "$(json_get flat.json phantom_elements)" ]
+check "flatten --phantoms: the mesh's vertices" [ "$(vtk_header flat-phantoms.vtk POINTS)" = 49 ]
+check "flatten --phantoms: positive flags" \
+  [ "$(vtk_sum flat-phantoms.vtk positive)" = "$(( $(json_get flat.json phantom_elements) - $(json_get flat.json phantom_elements_not_positive_after) ))" ]
+check "flatten --phantoms: det_J per phantom" vtk_fields_sized flat-phantoms.vtk "$(json_get flat.json phantom_elements)" det_J
+check "flatten --svg: phantoms dashed" \
+  [ "$(svg_count flat.svg '<polygon class="phantom"')" = "$(json_get flat.json phantom_elements)" ]
+check "flatten --svg: phantom legend" grep -q '>phantom</text>' flat.svg
+run flat_mesh surface.off --init project -o flat-for-mesh.vtk --phantoms flat-phantoms.mesh -q
+check "flatten --phantoms .mesh: exit 0" rc_is flat_mesh 0
+check "flatten --phantoms .mesh: one triangle per phantom" \
+  [ "$(awk '$1 == "Triangles" { getline; print $1 }' flat-phantoms.mesh)" = "$(json_get flat.json phantom_elements)" ]
+run flat_phantoms_off surface.off --init project -o flat-for-off.obj --phantoms flat-phantoms.off -q
+check "flatten --phantoms .off: exit 0" rc_is flat_phantoms_off 0
+check "flatten --phantoms .off: one face per phantom" \
+  [ "$(awk 'NR == 2 { print $2 }' flat-phantoms.off)" = "$(json_get flat.json phantom_elements)" ]
+# 3D, every vertex free: phantom tetrahedra, with their phantom vertices.
+: > none.txt
+run free3d small3d.input --fixed none.txt -o free3d.vtk --phantoms free3d-phantoms.vtk --report free3d.json -q
+check "free cube --phantoms: exit 0" rc_is free3d 0
+check "free cube --phantoms: phantoms used" json_positive free3d.json phantom_elements
+check "free cube --phantoms: one cell per phantom" \
+  [ "$(vtk_header free3d-phantoms.vtk CELLS)" = "$(json_get free3d.json phantom_elements)" ]
+check "free cube --phantoms: tetrahedra" [ "$(grep -cx 10 free3d-phantoms.vtk)" = "$(json_get free3d.json phantom_elements)" ]
+check "free cube --phantoms: mesh and phantom vertices" \
+  [ "$(vtk_header free3d-phantoms.vtk POINTS)" = "$(( $(json_get free3d.json vertices) + $(json_get free3d.json phantom_vertices) ))" ]
+check "free cube --phantoms: phantom vertices flagged" \
+  [ "$(vtk_sum free3d-phantoms.vtk phantom_vertex)" = "$(json_get free3d.json phantom_vertices)" ]
+# No phantom needed (boundary fixed): an empty but valid file, and a note.
+run no_phantom small3d.input -o fixed3d.vtk --phantoms none.vtk --report none.json -q
+check "fixed cube --phantoms: exit 0" rc_is no_phantom 0
+check "fixed cube --phantoms: no cell" grep -qx 'CELLS 0 0' none.vtk
+check "fixed cube --phantoms: the vertices" [ "$(vtk_header none.vtk POINTS)" = "$(json_get none.json vertices)" ]
+check "fixed cube --phantoms: says so" err_has no_phantom 'note: no phantom element was used.*none\.vtk holds the vertices only'
 run flat_off surface.off -o flat.off -q
 check "surface without --init project: exit 2" rc_is flat_off 2
 check "surface without --init project: names the z" err_has flat_off 'has z = '
@@ -519,7 +616,7 @@ if [ -n "$DATA" ] && [ -d "$DATA/tlc-format" ]; then
   # reported whatever the untangler makes of it.
   file="$DATA/tlc-format/sea-free51.input"
   if [ -f "$file" ]; then
-    run sea "$file" -o sea-out.input --svg sea.svg --svg-input sea-in.svg --report sea.json -q
+    run sea "$file" -o sea-out.input --svg sea.svg --svg-input sea-in.svg --phantoms sea-phantoms.vtk --report sea.json -q
     check "sea-free51 --svg: exit 0 or 1" grep -qx "[01]" sea.rc
     check "sea-free51: boundary_self_intersections_before 900" json_is sea.json boundary_self_intersections_before 900
     check "sea-free51: 900 crossings in the input picture" [ "$(svg_count sea-in.svg '<g class="crossing"')" = 900 ]
@@ -530,6 +627,11 @@ if [ -n "$DATA" ] && [ -d "$DATA/tlc-format" ]; then
       [ "$(svg_count sea.svg '<g class="crossing"')" = "$(json_get sea.json boundary_self_intersections_after)" ]
     check "sea-free51: result circles as reported" \
       [ "$(svg_count sea.svg '<circle class="overwound"')" = "$(json_get sea.json overwound_vertices)" ]
+    check "sea-free51: phantoms dashed in the result picture" \
+      [ "$(svg_count sea.svg '<polygon class="phantom"')" = "$(json_get sea.json phantom_elements)" ]
+    check "sea-free51: no phantom in the input picture" [ "$(svg_count sea-in.svg '<polygon class="phantom"')" = 0 ]
+    check "sea-free51 --phantoms: one cell per phantom" \
+      [ "$(vtk_header sea-phantoms.vtk CELLS)" = "$(json_get sea.json phantom_elements)" ]
   else
     echo "SKIPPED: $file is absent"
   fi

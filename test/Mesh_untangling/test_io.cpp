@@ -386,6 +386,16 @@ void test_vtk_errors()
                    "VTK 5 OFFSETS/CONNECTIVITY");
   CHECK_READ_ERROR(read_vtk, "tail.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n7\n", 15,
                    "unexpected '7' after CELL_TYPES");
+  CHECK_READ_ERROR(read_vtk, "field.vtk",
+                   "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nFIELD FieldData 1\n"
+                   "TimeValue 1 2 double\n0.5\nPOINTS 1 double\n0 0 0\n", 8,
+                   "truncated: the FIELD block ends after 1 of 2 values (found 'POINTS')");
+  CHECK_READ_ERROR(read_vtk, "fieldcount.vtk",
+                   "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nFIELD FieldData x\n", 5,
+                   "FIELD array count");
+  CHECK_READ_ERROR(read_vtk, "metadata.vtk",
+                   head + "METADATA\nINFORMATION 0\n\nCELLS 1 5\n4 0 1 2 3\nCELL_DATA 1\n", 16,
+                   "expected CELL_TYPES, got 'CELL_DATA'");
   CHECK_READ_ERROR(
       read_vtk, "huge.vtk",
       "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 99999999999999 double\n0 0 0\n", 6,
@@ -496,6 +506,47 @@ bool has_temporary_files()
     if(entry.path().extension() == ".tmp")
       return true;
   return false;
+}
+
+// The fields the tool writes, and those ParaView adds when it saves a
+// legacy file (data set field data, array metadata, vectors), do not change
+// the mesh read back.
+void test_vtk_fields()
+{
+  for(const Mesh_file& mesh : {tet_mesh(false), triangle_mesh(0, 2)}) {
+    const std::size_t n = mesh.map.size(), m = mesh.simplices.size();
+    IO::VTK_fields cells = {{"det_J", std::vector<double>(m, -0.125)}, {"inverted", std::vector<double>(m, 1.), true}};
+    IO::VTK_fields points = {{"overwound", std::vector<double>(n, 0.), true},
+                             {"covering", std::vector<double>(n, 1.0000000000000002)}};
+    const std::string path = temp_path(mesh.simplex_size == 4 ? "fields3.vtk" : "fields2.vtk");
+    IO::write_VTK(path, mesh, cells, points);
+    CHECK(same_mesh(IO::read_VTK(path), map_only(mesh)));
+    const std::string text = read_text(path);
+    CHECK(text.find("CELL_DATA " + std::to_string(m) + "\nSCALARS det_J double 1\nLOOKUP_TABLE default\n-0.125\n")
+          != std::string::npos);
+    CHECK(text.find("SCALARS inverted int 1\nLOOKUP_TABLE default\n1\n") != std::string::npos);
+    CHECK(text.find("POINT_DATA " + std::to_string(n) + "\nSCALARS overwound int 1") != std::string::npos);
+    CHECK(text.find("\n1.0000000000000002\n") != std::string::npos);
+  }
+  // Whole numbers of any size print as integers, never in exponent form.
+  const Mesh_file tets = tet_mesh(false);
+  IO::write_VTK(temp_path("big.vtk"), tets, {{"count", {1e6, -3}, true}});
+  CHECK(read_text(temp_path("big.vtk")).find("LOOKUP_TABLE default\n1000000\n-3\n") != std::string::npos);
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("half.vtk"), tets, {{"count", {0.5, 1}, true}}),
+                    "cell field 'count' value 0 is not an int");
+  CHECK(!fs::exists(temp_path("half.vtk")));
+
+  const std::string paraview =
+      "# vtk DataFile Version 4.2\nvtk output\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+      "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\nname 1 1 string\nmy%20mesh\n"
+      "POINTS 5 float\n0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1 \n\nMETADATA\nINFORMATION 2\n"
+      "NAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0 1.73205 \n"
+      "NAME L2_NORM_FINITE_RANGE LOCATION vtkDataArray\nDATA 2 0 1.73205 \n\n"
+      "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\n\nCELL_TYPES 2\n10\n10\n\n"
+      "CELL_DATA 2\nFIELD FieldData 1\nvtkGhostType 1 2 unsigned_char\n0 0\n"
+      "POINT_DATA 5\nVECTORS v double\n0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n";
+  const Mesh_file read = IO::read_VTK(write_text("paraview.vtk", paraview));
+  CHECK(read.simplex_size == 4 && read.simplices.size() == 2 && read.map.size() == 5 && read.map[4][2] == 1);
 }
 
 void test_writer_errors()
@@ -657,6 +708,7 @@ int main(int argc, char** argv)
   test_obj_errors();
   test_handles_and_common_errors();
   test_writer_errors();
+  test_vtk_fields();
 
   const fs::path data = argc > 1 ? fs::path(argv[1]) : fs::path();
   if(argc > 1 && fs::is_directory(data / "tlc-format") && fs::is_directory(data / "lim")

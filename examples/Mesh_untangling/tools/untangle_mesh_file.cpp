@@ -80,9 +80,55 @@ MU::internal::Untangling_input<d> make_input(const Mesh_file& mesh, const std::v
 }
 
 template <int d>
-Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options)
+std::array<std::size_t, 4> widened(const std::array<std::size_t, d + 1>& s)
+{
+  std::array<std::size_t, 4> w{0, 0, 0, 0};
+  for(int i = 0; i <= d; ++i) w[i] = s[i];
+  return w;
+}
+
+/// The targets of the run as make_untangling_problem() scaled them: the same
+/// call on the input the run started from (the scale of matched targets
+/// comes from the initial map), with the targets it ended with (default ones
+/// when phantoms needed them) and its phantoms.
+template <int d>
+void record_run(MU::internal::Untangling_input<d> frame, const MU::internal::Untangling_input<d>& final_input,
+                const MU::internal::Phantom_elements<d>& phantoms, Run_record& record)
+{
+  namespace MUI = MU::internal;
+  frame.targets = final_input.targets;
+  MUI::append_phantom_elements<d>(frame, phantoms);
+  // What AUTOMATIC chose in the run; the fixed flags that decide it are then
+  // dropped, so that elements with fixed vertices only get a target too.
+  const MU::Target_scaling scaling = !frame.targets.empty() && MUI::has_free_boundary_vertex<d>(frame)
+                                       ? MU::Target_scaling::AS_GIVEN : MU::Target_scaling::MATCH_MAP_VOLUME;
+  frame.is_fixed.clear();
+  const MUI::Untangling_problem<d> P = MUI::make_untangling_problem<d>(frame, scaling);
+  record.dimension = d;
+  record.target_orientations = P.reference_orientation;
+  record.target_inverses.clear();
+  record.target_inverses.reserve(P.elements.size() * d * d);
+  for(const auto& G : P.gradient_operators) {
+    // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
+    const Eigen::Matrix<double, d, d> T = G.template bottomRows<d>() / P.scale;
+    record.target_inverses.insert(record.target_inverses.end(), T.data(), T.data() + d * d);
+  }
+  record.phantom_simplices.clear();
+  for(const auto& e : phantoms.elements) record.phantom_simplices.push_back(widened<d>(e));
+  record.phantom_vertices.clear();
+  for(const auto& p : phantoms.extra_vertices) {
+    std::array<double, 3> q{0., 0., 0.};
+    for(int c = 0; c < d; ++c) q[c] = p[c];
+    record.phantom_vertices.push_back(q);
+  }
+}
+
+template <int d>
+Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
+                           Run_record* record)
 {
   auto in = make_input<d>(mesh, is_fixed);
+  const auto initial = record ? in : MU::internal::Untangling_input<d>();
   MU::internal::Untangling_options o;
   o.theta = options.theta;
   if(options.solver == "lbfgs") o.solver = MU::Solver::LBFGS;
@@ -93,18 +139,17 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
     o.callback = [&](const MU::Untangling_step& s) { options.progress(s); return true; };
   MU::internal::Protection_request<d> protection;
   protection.enabled = options.phantoms;
-  const Untangling_result result = MU::internal::untangle<d>(in, o, protection);
+  MU::internal::Phantom_elements<d> phantoms;
+  const Untangling_result result = MU::internal::untangle<d>(in, o, protection, &phantoms);
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   for(std::size_t v = 0; v < in.positions.size(); ++v)
     for(int c = 0; c < d; ++c) mesh.map[v][c] = in.positions[v][c];
+  if(record) record_run<d>(initial, in, phantoms, *record);
   return result;
 }
 
-template <int d>
-Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+Verdict verdict_of(const MU::Invertibility_report& report)
 {
-  const auto report = MU::check_local_invertibility<d>(points_of<d>(mesh.map), simplices_of<d>(mesh),
-                                                       reference_orientations(mesh), is_fixed);
   Verdict v;
   v.inverted = report.inverted_elements;
   v.overwound_vertices = report.overwound_interior_vertices + report.overwound_boundary_vertices;
@@ -123,6 +168,102 @@ Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 }
 
 template <int d>
+Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+{
+  return verdict_of(MU::check_local_invertibility<d>(points_of<d>(mesh.map), simplices_of<d>(mesh),
+                                                     reference_orientations(mesh), is_fixed));
+}
+
+/// The Jacobian of the map from the scaled target of element `k` of `record`
+/// onto the simplex `s` at `x` (from edge vectors: no cancellation far from
+/// the origin).
+template <int d>
+Eigen::Matrix<double, d, d> scaled_jacobian(const std::vector<std::array<double, 3>>& x, std::array<std::size_t, 4> s,
+                                            const Run_record& record, std::size_t k)
+{
+  if(record.target_orientations[k] < 0) std::swap(s[0], s[1]);
+  Eigen::Matrix<double, d, d> edges;
+  for(int i = 0; i < d; ++i)
+    for(int c = 0; c < d; ++c) edges(c, i) = x[s[i + 1]][c] - x[s[0]][c];
+  return edges * Eigen::Map<const Eigen::Matrix<double, d, d>>(&record.target_inverses[d * d * k]);
+}
+
+/// det_J and positive of the phantoms (`first` is the number of mesh elements).
+template <int d>
+MU::IO::VTK_fields phantom_cells(const Mesh_file& phantoms, const Run_record& record, std::size_t first)
+{
+  const std::size_t m = phantoms.simplices.size();
+  const std::vector<int> signs = MU::simplex_orientations<d>(points_of<d>(phantoms.map), simplices_of<d>(phantoms));
+  std::vector<double> det(m), positive(m);
+  for(std::size_t k = 0; k < m; ++k) {
+    det[k] = scaled_jacobian<d>(phantoms.map, phantoms.simplices[k], record, first + k).determinant();
+    positive[k] = signs[k] * record.target_orientations[first + k] > 0;
+  }
+  return {{"det_J", std::move(det)}, {"positive", std::move(positive), true}};
+}
+
+MU::IO::VTK_field flags(const char* name, std::size_t size, const std::vector<std::size_t>& ids)
+{
+  MU::IO::VTK_field f{name, std::vector<double>(size, 0.), true};
+  for(std::size_t i : ids) f.values[i] = 1;
+  return f;
+}
+
+/// The distortions of measure_quality() in Untangler.h, per element.
+template <int d>
+void add_distortions(const Mesh_file& mesh, const Run_record& record, MU::IO::VTK_fields& cells)
+{
+  const std::size_t m = mesh.simplices.size();
+  std::vector<double> det(m), shape(m, 0.), volume(m, 0.);
+  for(std::size_t k = 0; k < m; ++k) {
+    const Eigen::Matrix<double, d, d> J = scaled_jacobian<d>(mesh.map, mesh.simplices[k], record, k);
+    det[k] = J.determinant();
+    if(!(det[k] > 0)) continue;
+    shape[k] = J.squaredNorm() / d / std::pow(det[k], 2. / d);
+    volume[k] = (det[k] + 1 / det[k]) / 2;
+  }
+  cells.push_back({"det_J", std::move(det)});
+  cells.push_back({"shape_distortion", std::move(shape)});
+  cells.push_back({"volume_distortion", std::move(volume)});
+}
+
+template <int d>
+Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
+{
+  const auto points = points_of<d>(mesh.map);
+  const auto simplices = simplices_of<d>(mesh);
+  const std::vector<int> orientation = reference_orientations(mesh);
+  const auto report = MU::check_local_invertibility<d>(points, simplices, orientation, is_fixed);
+  const std::size_t n = mesh.map.size(), m = simplices.size();
+  Map_fields f;
+  f.verdict = verdict_of(report);
+  add_distortions<d>(mesh, record, f.cells);
+  f.cells.push_back(flags("inverted", m, report.inverted_element_ids));
+  f.cells.push_back(flags("input_defect", m, report.input_defect_element_ids));
+  f.points.push_back({"fixed", std::vector<double>(n, 0.), true});
+  for(std::size_t v = 0; v < is_fixed.size(); ++v) f.points.back().values[v] = is_fixed[v];
+  f.points.push_back(flags("overwound", n, report.overwound_vertex_ids));
+  if constexpr(d == 2) {
+    f.points.push_back({"covering", MU::vertex_covering_numbers_2(points, simplices, orientation)});
+  } else {
+    f.points.push_back({"covering", MU::vertex_covering_numbers_3(points, simplices, orientation)});
+    MU::IO::VTK_field edges{"overwound_edges", std::vector<double>(n, 0.), true};
+    for(const auto& e : report.overwound_edges) { ++edges.values[e[0]]; ++edges.values[e[1]]; }
+    f.points.push_back(std::move(edges));
+  }
+  return f;
+}
+
+void check_record(const Mesh_file& mesh, const Run_record& record)
+{
+  const std::size_t elements = mesh.simplices.size() + record.phantom_simplices.size();
+  const std::size_t d = std::size_t(record.dimension);
+  if(record.dimension != mesh.simplex_size - 1 || record.target_orientations.size() != elements ||
+     record.target_inverses.size() != d * d * elements)
+    throw Invalid_problem("the run record does not belong to this mesh (" + std::to_string(elements) + " elements)");
+}
+
+template <int d>
 Boundary_verdict check_boundary(const Mesh_file& mesh)
 {
   // Only the counts are reported: list no pair.
@@ -136,10 +277,38 @@ Boundary_verdict check_boundary(const Mesh_file& mesh)
 
 } // namespace
 
-Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options)
+Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
+                                     Run_record* record)
 {
   check_shape(mesh, is_fixed);
-  return mesh.simplex_size == 3 ? untangle<2>(mesh, is_fixed, options) : untangle<3>(mesh, is_fixed, options);
+  return mesh.simplex_size == 3 ? untangle<2>(mesh, is_fixed, options, record)
+                                : untangle<3>(mesh, is_fixed, options, record);
+}
+
+Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
+{
+  check_shape(mesh, is_fixed);
+  check_record(mesh, record);
+  return mesh.simplex_size == 3 ? measure<2>(mesh, is_fixed, record) : measure<3>(mesh, is_fixed, record);
+}
+
+Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record)
+{
+  check_shape(mesh, {});
+  check_record(mesh, record);
+  Phantom_mesh p;
+  p.mesh.simplex_size = mesh.simplex_size;
+  p.mesh.simplices = record.phantom_simplices;
+  p.mesh.map_dimension = mesh.map_dimension;
+  p.mesh.map = mesh.map;
+  p.mesh.map.insert(p.mesh.map.end(), record.phantom_vertices.begin(), record.phantom_vertices.end());
+  p.cells = mesh.simplex_size == 3 ? phantom_cells<2>(p.mesh, record, mesh.simplices.size())
+                                   : phantom_cells<3>(p.mesh, record, mesh.simplices.size());
+  for(double positive : p.cells.back().values) p.not_positive += positive == 0;
+  std::vector<double> phantom_vertex(p.mesh.map.size(), 0.);
+  std::fill(phantom_vertex.begin() + mesh.map.size(), phantom_vertex.end(), 1.);
+  p.points = {{"phantom_vertex", std::move(phantom_vertex), true}};
+  return p;
 }
 
 void project_surface_on_best_fit_plane(Mesh_file& mesh)
@@ -184,6 +353,13 @@ Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
     map.targets.push_back({{{t[0][0], t[0][1]}, {t[1][0], t[1][1]}, {t[2][0], t[2][1]}}});
   if(map.targets.size() != map.triangles.size()) map.targets.clear();
   return map;
+}
+
+void add_phantom_overlay(Svg_map& map, const Run_record& record)
+{
+  for(const auto& p : record.phantom_vertices) map.positions.push_back({p[0], p[1]});
+  if(!map.is_fixed.empty()) map.is_fixed.resize(map.positions.size(), false);
+  for(const auto& s : record.phantom_simplices) map.overlay.push_back({s[0], s[1], s[2]});
 }
 
 std::vector<int> reference_orientations(const Mesh_file& mesh)

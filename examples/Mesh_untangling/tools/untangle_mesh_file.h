@@ -8,11 +8,13 @@
 #define MESH_UNTANGLING_TOOLS_UNTANGLE_MESH_FILE_H
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
 #include "svg_writer.h"
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -39,12 +41,33 @@ struct Run_options
 /// The problem does not make sense (names what is wrong).
 struct Invalid_problem : std::runtime_error { using std::runtime_error::runtime_error; };
 
+/// What a run used besides the mesh: its phantom elements, and its targets
+/// as the untangler scaled them, so that a map can be measured afterwards the
+/// way the run measured it (the report's scaled det J).
+struct Run_record
+{
+  int dimension = 0;
+  /// ids as in Mesh_file::simplices; from the mesh's vertex count on, phantom vertices
+  std::vector<std::array<std::size_t, 4>> phantom_simplices;
+  /// the phantom vertices at their final positions (z = 0 in 2D)
+  std::vector<std::array<double, 3>> phantom_vertices;
+  /// per mesh element, then per phantom: the orientation of its target
+  /// (+1 or -1) and the inverse of its scaled target's edge matrix in the
+  /// map's units (d x d, column-major), so that det J of the map from the
+  /// target is det([x1 - x0, ..., xd - x0] T) with vertices 0 and 1 swapped
+  /// where the orientation is -1
+  std::vector<int> target_orientations;
+  std::vector<double> target_inverses;
+};
+
 /// Untangles `mesh.map` in place.  Triangles untangle a planar map (z = 0)
 /// with targets from `mesh.rest` (3D rest triangles are laid flat
 /// isometrically); tetrahedra untangle a 3D map with targets from the rest
 /// positions.  Without rest geometry every target is a regular simplex.
+/// `record`, when given, receives the phantoms and targets the run used.
 /// Throws Invalid_problem.
-Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options);
+Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
+                                     Run_record* record = nullptr);
 
 /// Makes a 2D map for the triangulated surface `mesh.map` (3D positions):
 /// the surface becomes the rest geometry and the map its orthogonal
@@ -71,6 +94,34 @@ struct Verdict
 };
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
+/// Per-element and per-vertex figures of `mesh.map`, measured against the
+/// targets of the run `record`, named as in the VTK files of the tool.
+/// Cells: `det_J` (scaled as the report's min scaled det J), `shape_distortion`
+/// tr(JᵀJ)/d / det(J)^(2/d) and `volume_distortion` (det J + 1/det J)/2 (both
+/// 0 where det J <= 0: undefined there), `inverted` and `input_defect`
+/// (exact orientation against the rest, as `verdict`).  Points: `fixed`,
+/// `overwound` (the star is over-wound, as `verdict`), `covering` (the
+/// winding of the star) and, for tetrahedra, `overwound_edges` (how many
+/// over-wound edge fans meet at the vertex).
+struct Map_fields
+{
+  CGAL::Mesh_untangling::IO::VTK_fields cells, points;
+  Verdict verdict;   ///< check_mesh_file() of the same map
+};
+Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record);
+
+/// The phantom elements of the run `record` on the map `mesh.map`, as a mesh:
+/// the map's vertices, then the phantom vertices, and the phantom simplices.
+/// Cells: `det_J` (as Map_fields) and `positive` (exact orientation that of
+/// the phantom's target).  Points: `phantom_vertex`.
+struct Phantom_mesh
+{
+  Mesh_file mesh;
+  CGAL::Mesh_untangling::IO::VTK_fields cells, points;
+  std::size_t not_positive = 0;
+};
+Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record);
+
 /// Whether the image of the boundary (edges in 2D, triangles in 3D) meets
 /// itself: the global-invertibility check of global_invertibility.h.
 struct Boundary_verdict
@@ -84,6 +135,10 @@ Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh);
 /// The picture of a 2D map (triangles): its positions, orientations and
 /// targets as the untangler sees them.  Throws Invalid_problem for tetrahedra.
 Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
+
+/// Adds the phantoms of `record` to `map` (the picture of the map they were
+/// used on) as dashed triangles.
+void add_phantom_overlay(Svg_map& map, const Run_record& record);
 
 /// Orientation each element must have: that of its rest simplex (triangles
 /// with 3D rest are always +1); +1 without rest.

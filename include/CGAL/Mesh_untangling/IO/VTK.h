@@ -15,9 +15,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -25,8 +25,16 @@ namespace Mesh_untangling {
 namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
-/// Named per-cell or per-point scalar values written along with a VTK mesh.
-typedef std::vector<std::pair<std::string, std::vector<double>>> VTK_fields;
+/// A named scalar field, one value per cell or per point, written along with a VTK mesh.
+struct VTK_field
+{
+  std::string name;
+  std::vector<double> values;
+  bool integer = false;  ///< written as `int` (flags, counts): the values must be whole numbers
+};
+
+/// \ingroup PkgMeshUntanglingIO
+typedef std::vector<VTK_field> VTK_fields;
 
 namespace internal {
 
@@ -75,6 +83,73 @@ inline Token expect_VTK_keyword(Text_file& file, const char* keyword)
   return token;
 }
 
+// VTK 8 and later may follow an array with a METADATA block (component
+// names, information keys), which ends at an empty line.
+inline void skip_VTK_metadata(Text_file& file)
+{
+  std::string_view text;
+  std::size_t line = 0;
+  file.next_raw_line(text, line);   // the rest of the METADATA line
+  while(file.next_raw_line(text, line))
+    if(text.find_first_not_of(" \t\r\v\f") == std::string_view::npos)
+      return;
+}
+
+// The next token that is not part of an array's METADATA block.
+inline bool next_VTK_token(Text_file& file, Token& token)
+{
+  while(file.next_token(token)) {
+    if(!same_keyword(token.text, "METADATA"))
+      return true;
+    skip_VTK_metadata(file);
+  }
+  return false;
+}
+
+// Field data of the whole data set (ParaView stores the time there) may come
+// before POINTS: 'FIELD name count', then per array 'name components tuples
+// type' and its values (one token each: VTK encodes blanks in strings).
+inline void skip_VTK_field_data(Text_file& file)
+{
+  Token name, count_token;
+  if(!file.next_token(name) || !file.next_token(count_token))
+    file.fail_truncated("expected 'FIELD name count'");
+  const std::size_t count = to_size(file, count_token, "FIELD array count");
+  for(std::size_t a = 0; a < count; ++a) {
+    Token header[4];
+    bool complete = next_VTK_token(file, header[0]);
+    for(int i = 1; i < 4 && complete; ++i)
+      complete = file.next_token(header[i]);
+    if(!complete)
+      file.fail_truncated("expected 'name components tuples type' of FIELD array " + std::to_string(a));
+    const std::string what = "FIELD array " + quote_token(header[0].text);
+    const std::size_t components = to_size(file, header[1], "component count of " + what);
+    const std::size_t tuples = to_size(file, header[2], "tuple count of " + what);
+    if(tuples != 0 && components > std::numeric_limits<std::size_t>::max() / tuples)
+      file.fail(header[1].line, what + " is too large");
+    const std::size_t values = components * tuples;
+    for(std::size_t i = 0; i < values; ++i)
+      next_VTK_value(file, "FIELD", i, values, "values");
+  }
+}
+
+// The next section keyword, which must be `keyword`; array metadata and data
+// set field data on the way are skipped.
+inline Token expect_VTK_section(Text_file& file, const char* keyword)
+{
+  for(;;) {
+    Token token;
+    if(!next_VTK_token(file, token))
+      file.fail_truncated(std::string("expected ") + keyword);
+    if(same_keyword(token.text, "FIELD"))
+      skip_VTK_field_data(file);
+    else if(same_keyword(token.text, keyword))
+      return token;
+    else
+      file.fail(token.line, std::string("expected ") + keyword + ", got " + quote_token(token.text));
+  }
+}
+
 inline void read_VTK_header(Text_file& file)
 {
   std::string_view text;
@@ -109,7 +184,7 @@ inline void check_VTK_data_type(const Text_file& file, const Token& token)
 
 inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
 {
-  expect_VTK_keyword(file, "POINTS");
+  expect_VTK_section(file, "POINTS");
   Token count_token, type;
   if(!file.next_token(count_token) || !file.next_token(type))
     file.fail_truncated("expected 'POINTS count type'");
@@ -147,7 +222,7 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count,
 
 inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_of_vertices)
 {
-  Token keyword = expect_VTK_keyword(file, "CELLS");
+  Token keyword = expect_VTK_section(file, "CELLS");
   Token count_token, size_token;
   if(!file.next_token(count_token) || !file.next_token(size_token))
     file.fail_truncated("expected 'CELLS count size'");
@@ -173,7 +248,7 @@ inline int VTK_simplex_size(std::size_t type)
 
 inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh)
 {
-  expect_VTK_keyword(file, "CELL_TYPES");
+  expect_VTK_section(file, "CELL_TYPES");
   Token count_token;
   if(!file.next_token(count_token))
     file.fail_truncated("expected the CELL_TYPES count");
@@ -217,30 +292,37 @@ inline void check_VTK_tail(Text_file& file)
 inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, std::size_t size,
                              const char* kind)
 {
-  for(const std::pair<std::string, std::vector<double>>& field : fields) {
-    const std::string& name = field.first;
-    if(name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
-      throw Write_error(path, std::string(kind) + " field name '" + name + "' is empty or has blanks");
-    if(field.second.size() != size)
-      throw Write_error(path, std::string(kind) + " field '" + name + "' has " + std::to_string(field.second.size())
-                                  + " values, expected " + std::to_string(size));
+  for(const VTK_field& field : fields) {
+    const std::string what = std::string(kind) + " field '" + field.name + "'";
+    if(field.name.empty() || field.name.find_first_of(" \t\r\n") != std::string::npos)
+      throw Write_error(path, what + ": the name is empty or has blanks");
+    if(field.values.size() != size)
+      throw Write_error(path, what + " has " + std::to_string(field.values.size()) + " values, expected "
+                                  + std::to_string(size));
     // VTK's own reader cannot parse "nan" or "inf".
-    for(std::size_t i = 0; i < size; ++i)
-      if(!std::isfinite(field.second[i]))
-        throw Write_error(path, std::string(kind) + " field '" + name + "' value " + std::to_string(i)
-                                    + " is not finite");
+    for(std::size_t i = 0; i < size; ++i) {
+      const double v = field.values[i];
+      if(!std::isfinite(v))
+        throw Write_error(path, what + " value " + std::to_string(i) + " is not finite");
+      if(field.integer && !(v == std::floor(v) && std::abs(v) <= 2147483647.))
+        throw Write_error(path, what + " value " + std::to_string(i) + " is not an int");
+    }
   }
 }
 
+// No section for no entries (a file of no phantom has no cells to attach fields to).
 inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section)
 {
-  if(fields.empty())
+  if(fields.empty() || size == 0)
     return;
   out << section << ' ' << size << '\n';
-  for(const std::pair<std::string, std::vector<double>>& field : fields) {
-    out << "SCALARS " << field.first << " double 1\nLOOKUP_TABLE default\n";
-    for(double v : field.second) {
-      write_number(out, v);
+  for(const VTK_field& field : fields) {
+    out << "SCALARS " << field.name << (field.integer ? " int" : " double") << " 1\nLOOKUP_TABLE default\n";
+    for(double v : field.values) {
+      if(field.integer)
+        out << static_cast<long>(v);   // the shortest double text may read 1e+06
+      else
+        write_number(out, v);
       out << '\n';
     }
   }
@@ -265,7 +347,8 @@ inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a legacy ASCII VTK unstructured grid of triangles (type 5) or
-/// tetrahedra (type 10) into `map`; point and cell data are ignored.
+/// tetrahedra (type 10) into `map`; point and cell data, field data and the
+/// array metadata that VTK 8 and later write are ignored.
 /// \throws Read_error if the file is missing, binary, or malformed.
 inline Mesh_file read_VTK(const std::string& path)
 {
@@ -283,7 +366,8 @@ inline Mesh_file read_VTK(const std::string& path)
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the simplices and the map (the rest if there is no map) as a legacy
 /// ASCII VTK unstructured grid, with optional scalar fields (one value per
-/// simplex, resp. per vertex), e.g. to inspect inverted elements in ParaView.
+/// simplex, resp. per vertex; `int` or `double`), e.g. to inspect inverted
+/// elements in ParaView.
 /// \throws Write_error if the mesh or a field is inconsistent, or the file
 /// cannot be written.
 inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_fields& cell_fields = {},
