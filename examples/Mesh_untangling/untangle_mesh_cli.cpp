@@ -10,7 +10,7 @@
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
-#include <CGAL/Mesh_untangling/internal/Untangler.h>
+#include <CGAL/Mesh_untangling/internal/continuation.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -31,12 +31,13 @@ namespace {
 
 struct Arguments
 {
-  std::string input, rest, fixed, output, report, solver = "newton", init = "given";
+  std::string input, rest, fixed, output, report, solver = "newton", init = "given", continuation = "auto";
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
   bool fix_boundary = false, quiet = false, no_phantoms = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
+  std::size_t continuation_steps = MU::default_continuation_steps;
 };
 
 /// Bad usage or input: reported, nothing written, exit code 2.
@@ -272,6 +273,8 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["mean_volume_distortion"] = r.mean_volume_distortion;
   j["final_energy"] = r.final_energy;
   j["final_epsilon"] = r.final_epsilon;
+  j["continuation"] = args.continuation;
+  j["continuation_steps"] = r.continuation_steps;
   j["outer_iterations"] = r.outer_iterations;
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
@@ -288,11 +291,18 @@ Run_options run_options(const Arguments& args)
   options.max_iterations = args.max_iterations;
   options.max_seconds = args.time_limit;
   options.phantoms = !args.no_phantoms;
+  options.continuation = args.continuation == "never"  ? MU::Continuation::NEVER
+                       : args.continuation == "always" ? MU::Continuation::ALWAYS
+                                                       : MU::Continuation::AUTOMATIC;
+  options.continuation_steps = args.continuation_steps;
   if(!args.quiet)
     options.progress = [](const MU::Untangling_step& s) {
-      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s%s\n", s.step,
+      char motion[48] = "";
+      if(s.motion < 1) std::snprintf(motion, sizeof motion, "  (continuation, motion %.4g)", s.motion);
+      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s%s%s\n", s.step,
                    s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds,
-                   s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "");
+                   s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "",
+                   motion);
     };
   return options;
 }
@@ -356,6 +366,8 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                  "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
                  r.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
                  verdict.input_defects, r.number_of_phantom_elements, r.seconds);
+    if(r.continuation_steps > 0)
+      std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible\n", r.continuation_steps);
     std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
                  mesh.simplex_size == 3 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
                  run.checks.boundary_after.intersecting_pairs);
@@ -415,8 +427,14 @@ int main(int argc, char** argv)
   app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
                  "projected on its best-fit plane; the surface is the rest)")
     ->check(CLI::IsMember({"given", "project"}));
-  app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (the published scheme: "
+  app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (with --continuation never, the published scheme: "
                "no inverted element, but stars may be covered twice)");
+  app.add_option("--continuation", args.continuation, "move the fixed vertices from their rest positions in steps, "
+                 "each untangled from the previous map (needs a rest shape in the map's dimension and a fixed vertex; "
+                 "the free vertices start at rest): 'auto' when the direct untangling fails, 'never', 'always'")
+    ->check(CLI::IsMember({"auto", "never", "always"}));
+  app.add_option("--continuation-steps", args.continuation_steps, "equal steps the continuation starts with "
+                 "(a failed step is halved)")->check(CLI::PositiveNumber);
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");

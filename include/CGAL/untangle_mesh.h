@@ -7,7 +7,7 @@
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
-#include <CGAL/Mesh_untangling/internal/Untangler.h>
+#include <CGAL/Mesh_untangling/internal/continuation.h>
 #include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -40,6 +40,10 @@ Untangling_options read_options(const NamedParameters& np)
                                    std::numeric_limits<double>::infinity());
   o.callback = choose_parameter(get_parameter(np, internal_np::callback),
                                 std::function<bool(const Untangling_step&)>());
+  o.continuation = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation),
+                                    Continuation::AUTOMATIC);
+  o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
+                                          Mesh_untangling::default_continuation_steps);
   return o;
 }
 

@@ -62,6 +62,7 @@ if sys.argv[2] in d: print(json.dumps(d[sys.argv[2]]))' "$1" "$2" 2> /dev/null
 }
 json_is() { [ "$(json_get "$1" "$2")" = "$3" ]; }
 json_positive() { local v; v=$(json_get "$1" "$2"); [[ "$v" =~ ^[0-9]+$ ]] && [ "$v" -gt 0 ]; }
+json_at_least() { local v; v=$(json_get "$1" "$2"); [[ "$v" =~ ^[0-9]+$ ]] && [ "$v" -ge "$3" ]; }
 json_parses() {
   if [ "$have_python" = 1 ]; then
     python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$1" 2> /dev/null
@@ -581,13 +582,28 @@ if [ -n "$DATA" ] && [ -f "$DATA/tlc-format/sea-free51.input" ]; then
   check "sea-free51: exit 0 with phantoms" rc_is sea 0
   check "sea-free51: phantoms used" json_positive sea.json phantom_elements
   check "sea-free51: no over-wound vertex" json_is sea.json overwound_vertices 0
-  run sea_bare "$DATA/tlc-format/sea-free51.input" -o sea-bare.input --report sea_bare.json --no-phantoms -q
+  # the published scheme: no phantoms, no continuation
+  run sea_bare "$DATA/tlc-format/sea-free51.input" -o sea-bare.input --report sea_bare.json --no-phantoms \
+    --continuation never -q
   check "sea-free51 --no-phantoms: exit 1" rc_is sea_bare 1
+  check "sea-free51 --no-phantoms: no continuation" json_is sea_bare.json continuation_steps 0
   check "sea-free51 --no-phantoms: no phantom" json_is sea_bare.json phantom_elements 0
   check "sea-free51 --no-phantoms: phantom_protection false" json_is sea_bare.json phantom_protection false
   check "sea-free51 --no-phantoms: 0 inverted" json_is sea_bare.json inverted_after 0
   check "sea-free51 --no-phantoms: over-wound vertex left" json_positive sea_bare.json overwound_vertices
   check "sea-free51 --no-phantoms: result written" test -s sea-bare.input
+  # after that trap, the continuation from the rest shape (the two handles
+  # moved in steps) ends locally invertible even without phantoms
+  run sea_continued "$DATA/tlc-format/sea-free51.input" -o sea-continued.input --report sea_continued.json \
+    --no-phantoms -q
+  check "sea-free51 --no-phantoms, continuation: exit 0" rc_is sea_continued 0
+  check "sea-free51 --no-phantoms, continuation: steps" json_positive sea_continued.json continuation_steps
+  check "sea-free51 --no-phantoms, continuation: handles unchanged" \
+    [ "$(handle_rows "$DATA/tlc-format/sea-free51.input")" = "$(handle_rows sea-continued.input)" ]
+  run sea_always "$DATA/tlc-format/sea-free51.input" -o sea-always.input --report sea_always.json \
+    --continuation always --continuation-steps 2 -q
+  check "sea-free51 --continuation always: exit 0" rc_is sea_always 0
+  check "sea-free51 --continuation always: at least 2 steps" json_at_least sea_always.json continuation_steps 2
 fi
 
 #

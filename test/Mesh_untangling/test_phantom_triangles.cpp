@@ -11,7 +11,7 @@
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/internal/phantom_triangles.h>
-#include <CGAL/Mesh_untangling/internal/Untangler.h>
+#include <CGAL/Mesh_untangling/internal/continuation.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
 #include <algorithm>

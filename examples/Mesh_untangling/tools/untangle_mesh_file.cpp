@@ -3,7 +3,7 @@
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
-#include <CGAL/Mesh_untangling/internal/Untangler.h>
+#include <CGAL/Mesh_untangling/internal/continuation.h>
 #include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
@@ -135,6 +135,8 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   else if(options.solver != "newton") throw Invalid_problem("unknown solver '" + options.solver + "' (newton, lbfgs)");
   o.max_outer_iterations = options.max_iterations;
   o.max_seconds = options.max_seconds;
+  o.continuation = options.continuation;
+  o.continuation_steps = options.continuation_steps;
   if(options.progress)
     o.callback = [&](const MU::Untangling_step& s) { options.progress(s); return true; };
   MU::internal::Protection_request<d> protection;

@@ -35,6 +35,8 @@ struct Run_options
   std::size_t max_iterations = CGAL::Mesh_untangling::default_number_of_iterations;   // eps steps
   double max_seconds = std::numeric_limits<double>::infinity();
   bool phantoms = true;                // protect a free boundary with phantom elements
+  CGAL::Mesh_untangling::Continuation continuation = CGAL::Mesh_untangling::Continuation::AUTOMATIC;
+  std::size_t continuation_steps = CGAL::Mesh_untangling::default_continuation_steps;
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
 };
 

@@ -70,6 +70,9 @@ struct Untangling_result
   double final_energy = 0;             ///< F(X, ε) at the last ε, normalized by the total target volume
   double final_epsilon = 0;
 
+  /// steps of the continuation from the rest shape that ended locally
+  /// invertible (0 when it did not run; see `Continuation`)
+  std::size_t continuation_steps = 0;
   std::size_t outer_iterations = 0;    ///< ε steps
   std::size_t inner_iterations = 0;    ///< solver iterations, all ε steps together
   std::size_t energy_evaluations = 0;  ///< evaluations of F (with or without gradient)

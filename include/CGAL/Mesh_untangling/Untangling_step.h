@@ -22,6 +22,9 @@ struct Untangling_step
   std::size_t energy_evaluations = 0;
   double seconds = 0;
   int stage = 0;                   ///< 0: given targets; 1: regular targets (fallback); 2: given targets again, from a valid map
+  /// fraction of the motion of the fixed vertices from their rest positions
+  /// applied so far: below 1 during the continuation, 1 otherwise
+  double motion = 1;
 };
 
 } // namespace Mesh_untangling

@@ -25,6 +25,8 @@ enum mesh_untangling_rest_points_t { mesh_untangling_rest_points };
 enum mesh_untangling_phantom_protection_t { mesh_untangling_phantom_protection };
 enum mesh_untangling_phantom_elements_t { mesh_untangling_phantom_elements };
 enum mesh_untangling_phantom_output_t { mesh_untangling_phantom_output };
+enum mesh_untangling_continuation_t { mesh_untangling_continuation };
+enum mesh_untangling_continuation_steps_t { mesh_untangling_continuation_steps };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -47,6 +49,24 @@ enum class Target_scaling
   AS_GIVEN,           ///< targets are in the units of the map
   MATCH_MAP_VOLUME    ///< targets scaled so that their total volume is the (signed) volume of the map
 };
+
+/// \ingroup PkgMeshUntanglingRef
+/// Whether the fixed vertices may be moved from their rest positions to the
+/// given ones in steps (continuation), each step untangled from the
+/// previous, locally invertible, map.  It needs rest positions in the
+/// dimension of the map (a rest shape: `rest_point_map`, `rest_points`, a
+/// 2D domain) and at least one fixed vertex; the free vertices then start at
+/// their rest positions, so their given positions are not used.
+enum class Continuation
+{
+  AUTOMATIC,   ///< when the direct untangling does not end locally invertible (default)
+  NEVER,       ///< the direct untangling only: the published scheme
+  ALWAYS       ///< the continuation only (where it applies; otherwise the direct untangling)
+};
+
+/// \ingroup PkgMeshUntanglingRef
+/// Default number of equal steps the continuation starts with (each halved when it fails).
+constexpr std::size_t default_continuation_steps = 8;
 
 /// \ingroup PkgMeshUntanglingRef
 /// Default largest number of eps steps (`number_of_iterations`), all stages together.
@@ -97,6 +117,15 @@ CGAL_MESH_UNTANGLING_PARAMETER(phantom_elements, mesh_untangling_phantom_element
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// An output iterator receiving the `CGAL::Mesh_untangling::Phantom_element`s used.
 CGAL_MESH_UNTANGLING_PARAMETER(phantom_output, mesh_untangling_phantom_output_t)
+
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A `CGAL::Mesh_untangling::Continuation`: when to move the fixed vertices
+/// from their rest positions in steps (default `Continuation::AUTOMATIC`).
+CGAL_MESH_UNTANGLING_PARAMETER(continuation, mesh_untangling_continuation_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `std::size_t`: the number of equal steps the continuation starts with
+/// (default `default_continuation_steps`); a step that fails is halved.
+CGAL_MESH_UNTANGLING_PARAMETER(continuation_steps, mesh_untangling_continuation_steps_t)
 
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 

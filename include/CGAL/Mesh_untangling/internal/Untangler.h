@@ -37,6 +37,11 @@ struct Untangling_options
   double max_seconds = std::numeric_limits<double>::infinity();
   Target_scaling scaling = Target_scaling::AUTOMATIC;
   std::function<bool(const Untangling_step&)> callback;   // false stops the run
+  Continuation continuation = Continuation::AUTOMATIC;
+  std::size_t continuation_steps = default_continuation_steps;
+  // When the continuation will follow a failed direct untangling, a stall of
+  // stage 0 already tells that the direct way is blocked (see continuation.h).
+  bool give_up_on_stall = false;
 };
 
 constexpr std::size_t stall_steps = 40;   // eps steps without fewer non-positive elements
@@ -202,8 +207,9 @@ Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector
   return check_local_invertibility<d>(as_arrays<d>(positions), elements, orientation, fixed);
 }
 
-/// Untangles `in.positions` in place (free vertices only: fixed ones are
-/// never written, so they keep their coordinates bit for bit).
+/// Untangles `in.positions` in place, directly from the given map (free
+/// vertices only: fixed ones are never written, so they keep their
+/// coordinates bit for bit).
 ///
 /// With a free boundary, phantom elements (`protection`) are added to the
 /// energy for the run and removed before the verdict, which concerns the
@@ -217,9 +223,9 @@ Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector
 /// times at most); stage 2 goes back to the given targets from that valid map,
 /// keeping it valid.
 template <int d>
-Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options,
-                           const Protection_request<d>& protection = Protection_request<d>(),
-                           Phantom_elements<d>* phantoms_used = nullptr)
+Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_options& options,
+                                    const Protection_request<d>& protection = Protection_request<d>(),
+                                    Phantom_elements<d>* phantoms_used = nullptr)
 {
   Untangling_result result;
   result.solver = to_string(options.solver);
@@ -251,7 +257,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
   Eps_loop_outcome outcome = loop.run(P, 0, stall_steps);
-  if(outcome.stalled) {
+  if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
     if(targets_given) outcome = loop.run(R, 1, stall_steps);
     // Still stuck: typically free vertices collapsed onto each other, a

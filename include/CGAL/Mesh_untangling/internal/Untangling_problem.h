@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -161,6 +162,30 @@ bool has_free_boundary_vertex(const Untangling_input<d>& in)
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
   return false;
+}
+
+/// The rest shape the targets describe when they agree at every shared
+/// vertex (to 1e-9 of their extent): one position per mesh vertex, a vertex
+/// in no element keeping its map position.  None when there are no targets
+/// or two of them disagree (per-element targets, default regular ones).
+template <int d>
+std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest_shape(const Untangling_input<d>& in)
+{
+  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
+  if(in.targets.size() < m || m == 0) return std::nullopt;
+  std::vector<Eigen::Matrix<double, d, 1>> rest(in.positions.begin(), in.positions.begin() + n);
+  std::vector<char> seen(n, 0);
+  double extent = 0;
+  for(std::size_t k = 0; k < m; ++k)
+    for(const auto& p : in.targets[k]) extent = (std::max)(extent, p.cwiseAbs().maxCoeff());
+  const double tolerance = 1e-9 * (extent > 0 ? extent : 1.);
+  for(std::size_t k = 0; k < m; ++k)
+    for(int i = 0; i <= d; ++i) {
+      const std::size_t v = in.elements[k][i];
+      if(!seen[v]) { rest[v] = in.targets[k][i]; seen[v] = 1; }
+      else if(!((rest[v] - in.targets[k][i]).cwiseAbs().maxCoeff() <= tolerance)) return std::nullopt;
+    }
+  return rest;
 }
 
 /// Sign of the total signed volume of the map (+1 when zero).

@@ -16,6 +16,7 @@
 #include <algorithm>
 
 #include <optional>
+#include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -56,29 +57,33 @@ inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in,
 /// vertex counts as an incomplete star.
 inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in, Protection_summary& summary)
 {
-  const std::size_t n = in.positions.size(), m = in.elements.size();
-  std::vector<Eigen::Vector3d> rest(in.positions);   // vertices in no element keep their map position
-  std::vector<char> seen(n, 0);
-  double extent = 0;
-  for(const auto& t : in.targets)
-    for(const auto& p : t) extent = std::max(extent, p.cwiseAbs().maxCoeff());
-  const double tolerance = 1e-9 * (extent > 0 ? extent : 1.);
-  bool consistent = in.targets.size() == m;
-  for(std::size_t k = 0; k < m && consistent; ++k)
-    for(int i = 0; i < 4; ++i) {
-      const std::size_t v = in.elements[k][i];
-      if(!seen[v]) { rest[v] = in.targets[k][i]; seen[v] = 1; }
-      else if(!((rest[v] - in.targets[k][i]).cwiseAbs().maxCoeff() <= tolerance)) { consistent = false; break; }
-    }
-  if(!consistent) {
-    const std::vector<char> boundary = boundary_vertices<3>(n, in.elements);
+  const std::optional<std::vector<Eigen::Vector3d>> rest = rest_shape<3>(in);
+  if(!rest) {
+    const std::vector<char> boundary = boundary_vertices<3>(in.positions.size(), in.elements);
     summary.incomplete_stars = std::size_t(std::count(boundary.begin(), boundary.end(), 1));
     return Phantom_elements<3>();
   }
   Phantom_statistics_3 statistics;
-  Phantom_elements<3> phantoms = compute_phantom_tetrahedra(rest, in.elements, in.is_fixed, in.positions, &statistics);
+  Phantom_elements<3> phantoms = compute_phantom_tetrahedra(*rest, in.elements, in.is_fixed, in.positions, &statistics);
   summary.incomplete_stars = statistics.incomplete_stars;
   return phantoms;
+}
+
+/// The phantoms of `in` built on the map `geometry` instead of the targets:
+/// when `geometry` is locally invertible, every one of them is positive
+/// there (the paper's remark that any admissible map supports a full set of
+/// phantoms), whereas phantoms built in the rest shape may not be, far from
+/// it.  The targets of the phantoms are their shapes in `geometry`.
+template <int d>
+Phantom_elements<d> build_phantom_elements_on(const Untangling_input<d>& in,
+                                              const std::vector<Eigen::Matrix<double, d, 1>>& geometry,
+                                              Protection_summary& summary)
+{
+  Untangling_input<d> on_geometry = in;
+  on_geometry.targets.resize(in.elements.size());
+  for(std::size_t k = 0; k < in.elements.size(); ++k)
+    for(int i = 0; i <= d; ++i) on_geometry.targets[k][i] = geometry[in.elements[k][i]];
+  return build_phantom_elements(on_geometry, summary);
 }
 
 /// Appends the phantoms that `request` calls for to `in` (mesh targets are
