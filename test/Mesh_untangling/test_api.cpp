@@ -680,6 +680,93 @@ void test_soups()
   }
 }
 
+/// The continuation from the rest shape: when it applies, what it reports,
+/// the budget and the callback it shares with the direct untangling.
+void test_continuation()
+{
+  // the folded grid soup of test_soups(): rest = grid, border fixed
+  const int n = N;
+  std::vector<Point_2> rest, given;
+  std::vector<char> fixed;
+  Triangles triangles;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, y = double(j) / n;
+      const bool border = i == 0 || j == 0 || i == n || j == n;
+      rest.push_back(Point_2(x, y));
+      // the border sheared and the interior folded: a prescribed motion to follow
+      given.push_back(border ? Point_2(x + 0.5 * y, y) : tangled(x, y));
+      fixed.push_back(border);
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const std::size_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({{a, b, d}});
+      triangles.push_back({{a, d, c}});
+    }
+  const auto is_fixed = boost::make_function_property_map<std::size_t>([&](std::size_t v) -> bool { return fixed[v] != 0; });
+  const auto fixed_kept = [&](const std::vector<Point_2>& points) {
+    for(std::size_t v = 0; v < points.size(); ++v)
+      if(fixed[v] && !(points[v] == given[v])) return false;
+    return true;
+  };
+
+  // ALWAYS: at least the steps asked for, every fixed vertex where it was put
+  {
+    std::vector<Point_2> points = given;
+    std::vector<double> motions;
+    const auto r = CGAL::untangle_simplex_soup(points, triangles,
+      MU::parameters::continuation(MU::Continuation::ALWAYS, MU::parameters::continuation_steps(3,
+        MU::parameters::rest_points(rest, CGAL::parameters::vertex_is_constrained_map(is_fixed)
+          .callback(std::function<bool(const MU::Untangling_step&)>([&](const MU::Untangling_step& s) {
+            motions.push_back(s.motion);
+            return true;
+          }))))));
+    CHECK_SUCCESS(r);
+    CHECK_MESSAGE(r.continuation_steps >= 3, describe(r) << ", " << r.continuation_steps << " continuation steps");
+    CHECK(fixed_kept(points));
+    CHECK(r.inverted_before > 0);   // the figures of the given map, not of the rest shape
+    CHECK(!motions.empty() && motions.front() > 0 && motions.front() <= 1. / 3 + 1e-12 && motions.back() == 1);
+    CHECK(std::is_sorted(motions.begin(), motions.end()));
+  }
+  // NEVER, and a direct run that succeeds (AUTOMATIC): no continuation
+  for(MU::Continuation c : {MU::Continuation::NEVER, MU::Continuation::AUTOMATIC}) {
+    std::vector<Point_2> points = given;
+    const auto r = CGAL::untangle_simplex_soup(points, triangles,
+      MU::parameters::continuation(c, MU::parameters::rest_points(rest, CGAL::parameters::vertex_is_constrained_map(is_fixed))));
+    CHECK_SUCCESS(r);
+    CHECK(r.continuation_steps == 0);
+  }
+  // without a rest shape there is no motion to follow: the direct run only
+  {
+    std::vector<Point_2> points = given;
+    const auto r = CGAL::untangle_simplex_soup(points, triangles,
+      MU::parameters::continuation(MU::Continuation::ALWAYS, CGAL::parameters::vertex_is_constrained_map(is_fixed)));
+    CHECK(r.continuation_steps == 0 && r.status != Status::INVALID_INPUT);
+  }
+  // the eps-step budget covers all the steps; the fixed vertices still end where they were put
+  {
+    std::vector<Point_2> points = given;
+    const auto r = CGAL::untangle_simplex_soup(points, triangles,
+      MU::parameters::continuation(MU::Continuation::ALWAYS, MU::parameters::continuation_steps(4,
+        MU::parameters::rest_points(rest, CGAL::parameters::vertex_is_constrained_map(is_fixed).number_of_iterations(3)))));
+    CHECK_MESSAGE(r.outer_iterations <= 3, describe(r));
+    CHECK(fixed_kept(points));
+  }
+  // a callback that stops the run: stopped, fixed vertices where they were put
+  {
+    std::vector<Point_2> points = given;
+    int calls = 0;
+    const auto r = CGAL::untangle_simplex_soup(points, triangles,
+      MU::parameters::continuation(MU::Continuation::ALWAYS, MU::parameters::continuation_steps(4,
+        MU::parameters::rest_points(rest, CGAL::parameters::vertex_is_constrained_map(is_fixed)
+          .callback(std::function<bool(const MU::Untangling_step&)>([&](const MU::Untangling_step&) { return ++calls < 2; }))))));
+    CHECK_MESSAGE(r.status == Status::STOPPED_BY_CALLBACK || r.status == Status::SUCCESS, describe(r));
+    CHECK_MESSAGE(calls == 2, calls << " calls, " << describe(r));
+    CHECK(fixed_kept(points));
+  }
+}
+
 /// Item 5: degenerate rest elements are replaced, the run still succeeds.
 void test_degenerate_targets()
 {
@@ -897,6 +984,7 @@ int main()
   test_more_parameters();
   test_tetrahedral();
   test_soups();
+  test_continuation();
   test_degenerate_targets();
   test_invalid_input();
   test_mesh_details();

@@ -78,16 +78,17 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
   const std::vector<Vector> given = in.positions;
   const bool build_phantoms = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
 
-  // One step: the fixed vertices at `motion` of their way, the free ones
-  // from `from`, phantoms (when built) on `from`, which is locally invertible.
   Untangling_result work;   // what the steps cost, all together
+  bool stop_requested = false;
   std::vector<Vector> map;
   Phantom_elements<d> used;
   // the eps-step budget and the clock are shared by all the steps
   const auto steps_left = [&] {
     return options.max_outer_iterations - std::min(options.max_outer_iterations, work.outer_iterations);
   };
-  const auto run_step = [&](const std::vector<Vector>& from, double motion, double seconds) {
+  // One step: the fixed vertices at `motion` of their way, the free ones
+  // from `from`, phantoms (when built) on `from`, which is locally invertible.
+  const auto run_step = [&](const std::vector<Vector>& from, double motion, double seconds, std::size_t eps_steps) {
     Untangling_input<d> step = in;
     step.positions = from;
     for(std::size_t v = 0; v < given.size(); ++v)
@@ -99,13 +100,14 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     }
     Untangling_options o = options;
     o.max_seconds = seconds;
-    o.max_outer_iterations = steps_left();
+    o.max_outer_iterations = eps_steps;
     o.give_up_on_stall = false;
     if(options.callback)
-      o.callback = [&options, motion](const Untangling_step& s) {
+      o.callback = [&options, &stop_requested, motion](const Untangling_step& s) {
         Untangling_step t = s;
         t.motion = motion;
-        return options.callback(t);
+        stop_requested = stop_requested || !options.callback(t);
+        return !stop_requested;
       };
     used = Phantom_elements<d>();
     Untangling_result r = untangle_directly<d>(step, o, request, &used);
@@ -124,13 +126,14 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     const double motion = std::min(1., reached + increment);
     const double seconds = options.max_seconds - elapsed();
     if(!(seconds > 0) || steps_left() == 0) break;
-    last = run_step(valid, motion, seconds);
+    last = run_step(valid, motion, seconds, steps_left());
     if(last.status == Untangling_status::INVALID_INPUT) return last;
     if(last.status == Untangling_status::SUCCESS) {
       valid = map;
       reached = motion;
       ++steps;
-    } else if(last.status == Untangling_status::STOPPED_BY_CALLBACK) {
+      blocked = stop_requested;
+    } else if(stop_requested) {
       blocked = true;
     } else if(increment / 2 >= smallest_increment) {
       increment /= 2;
@@ -138,12 +141,13 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
       blocked = true;
     }
   }
-  // Blocked, stopped or out of time or steps before the end: the fixed
+  // Blocked, stopped, or out of time or steps before the end: the fixed
   // vertices must reach their given positions all the same, from the last
-  // valid map (with no eps step left, the map is only checked).
-  if(reached < 1 && last.status != Untangling_status::STOPPED_BY_CALLBACK)
-    last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()));
-
+  // valid map (after a stop or with no eps step left, the map is only checked).
+  if(reached < 1) {
+    last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()), stop_requested ? 0 : steps_left());
+    if(stop_requested && last.status != Untangling_status::SUCCESS) last.status = Untangling_status::STOPPED_BY_CALLBACK;
+  }
   in.positions = map;
   if(phantoms_used) *phantoms_used = used;
   Untangling_result result = last;
