@@ -2,39 +2,64 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The rotated-cavities stress test (paper §4, Figure 16) at several mesh
-// sizes, unprotected and protected: prints a markdown table of what each run
-// ends with (inverted tetrahedra, over-wound edges and vertices, seconds,
-// phantom tetrahedra and vertices).
+// sizes, in four modes: the published scheme (no phantoms, no continuation),
+// phantoms alone, the continuation from the rest shape alone, and the
+// default (phantoms, and the continuation when the direct way fails).
+// Prints a markdown table of what each run ends with (inverted tetrahedra,
+// over-wound edges and vertices, boundary self-intersections, seconds,
+// phantom tetrahedra and vertices, continuation steps).
 //
-//   benchmark_cavities [--degrees D] [--time-limit SECONDS] SIZE...
+//   benchmark_cavities [--degrees D] [--time-limit SECONDS] [--write DIR] SIZE...
 //
-// e.g. benchmark_cavities --degrees 135 --time-limit 300 1.0 0.7 0.5
+// --write DIR also saves each problem as DIR/cavities-SIZE-D.input (rest,
+// map and fixed vertices), for untangle_mesh.
+// e.g. benchmark_cavities --degrees 135 --time-limit 900 1.0 0.6 0.4
 
 #include "cavities.h"
 #include "untangle_mesh_file.h"
 
+#include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <string>
 #include <vector>
 
 using namespace Mesh_untangling_tools;
 namespace MU = CGAL::Mesh_untangling;
 
+namespace {
+
+struct Mode
+{
+  const char* name;
+  bool phantoms;
+  MU::Continuation continuation;
+};
+
+const Mode modes[] = {{"published scheme", false, MU::Continuation::NEVER},
+                      {"phantoms", true, MU::Continuation::NEVER},
+                      {"continuation", false, MU::Continuation::ALWAYS},
+                      {"default (phantoms, continuation)", true, MU::Continuation::AUTOMATIC}};
+
+} // namespace
+
 int main(int argc, char** argv)
 {
   Cavities_options options;
   double seconds = 300;
+  std::string directory;
   std::vector<double> sizes;
   for(int i = 1; i < argc; ++i) {
     if(!std::strcmp(argv[i], "--degrees") && i + 1 < argc) options.rotation_degrees = std::atof(argv[++i]);
     else if(!std::strcmp(argv[i], "--time-limit") && i + 1 < argc) seconds = std::atof(argv[++i]);
+    else if(!std::strcmp(argv[i], "--write") && i + 1 < argc) directory = argv[++i];
     else if(std::atof(argv[i]) > 0) sizes.push_back(std::atof(argv[i]));
     else {
-      std::fprintf(stderr, "usage: benchmark_cavities [--degrees D] [--time-limit SECONDS] SIZE...\n");
+      std::fprintf(stderr, "usage: benchmark_cavities [--degrees D] [--time-limit SECONDS] [--write DIR] SIZE...\n");
       return 2;
     }
   }
@@ -42,25 +67,33 @@ int main(int argc, char** argv)
 
   std::printf("Cavities turned by %g degrees, time limit %g s\n\n", options.rotation_degrees, seconds);
   std::printf("| size | vertices | tets | mode | inverted before | inverted | over-wound edges | over-wound vertices "
-              "| seconds | phantom tets | phantom vertices | incomplete stars | status |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| boundary crossings | seconds | eps steps | continuation steps | phantom tets | phantom vertices "
+              "| status |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   try {
     for(double size : sizes) {
       options.mesh_size = size;
       const Mesh_file problem = make_cavities_problem(options);
+      if(!directory.empty()) {
+        char name[64];
+        std::snprintf(name, sizeof name, "/cavities-%g-%g.input", size, options.rotation_degrees);
+        MU::IO::write_mesh_file(directory + name, problem);
+      }
       std::vector<bool> fixed(problem.rest.size(), false);
       for(std::size_t v : problem.fixed) fixed[v] = true;
-      for(bool protect : {false, true}) {
+      for(const Mode& mode : modes) {
         Mesh_file m = problem;
         Run_options run;
-        run.phantoms = protect;
+        run.phantoms = mode.phantoms;
+        run.continuation = mode.continuation;
         run.max_seconds = seconds;
         const MU::Untangling_result r = untangle_mesh_file(m, fixed, run);
         const Verdict v = check_mesh_file(m, fixed);
-        std::printf("| %g | %zu | %zu | %s | %zu | %zu | %zu | %zu | %.1f | %zu | %zu | %zu | %s |\n", size,
-                    m.rest.size(), m.simplices.size(), protect ? "protected" : "unprotected", r.inverted_before,
-                    v.inverted, v.overwound_edges, v.overwound_vertices, r.seconds, r.number_of_phantom_elements,
-                    r.number_of_phantom_vertices, r.incomplete_phantom_stars, MU::to_string(r.status).c_str());
+        const Boundary_verdict b = check_boundary_of_mesh_file(m);
+        std::printf("| %g | %zu | %zu | %s | %zu | %zu | %zu | %zu | %zu | %.1f | %zu | %zu | %zu | %zu | %s |\n", size,
+                    m.rest.size(), m.simplices.size(), mode.name, r.inverted_before, v.inverted, v.overwound_edges,
+                    v.overwound_vertices, b.intersecting_pairs, r.seconds, r.outer_iterations, r.continuation_steps,
+                    r.number_of_phantom_elements, r.number_of_phantom_vertices, MU::to_string(r.status).c_str());
         std::fflush(stdout);
       }
     }
