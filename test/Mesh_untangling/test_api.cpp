@@ -615,20 +615,24 @@ void test_tetrahedral()
 }
 
 /// Item 3: soups.
-void test_soups()
+/// The N x N grid of the unit square as a soup: rest = grid, border fixed,
+/// map(x, y, on_border) the map.
+struct Grid_soup
 {
-  // 2D: the grid as a soup, rest = grid, map = folded interior
+  std::vector<Point_2> rest, points;
+  std::vector<char> fixed;
+  Triangles triangles;
+
+  template <class Map>
+  explicit Grid_soup(const Map& map)
   {
     const int n = N;
-    std::vector<Point_2> rest, points;
-    std::vector<char> fixed;
-    Triangles triangles;
     for(int j = 0; j <= n; ++j)
       for(int i = 0; i <= n; ++i) {
         const double x = double(i) / n, y = double(j) / n;
         const bool border = i == 0 || j == 0 || i == n || j == n;
         rest.push_back(Point_2(x, y));
-        points.push_back(border ? Point_2(x, y) : tangled(x, y));
+        points.push_back(map(x, y, border));
         fixed.push_back(border);
       }
     for(int j = 0; j < n; ++j)
@@ -637,6 +641,18 @@ void test_soups()
         triangles.push_back({{a, b, d}});
         triangles.push_back({{a, d, c}});
       }
+  }
+};
+
+void test_soups()
+{
+  // 2D: the grid as a soup, rest = grid, map = folded interior
+  {
+    Grid_soup grid([](double x, double y, bool border) { return border ? Point_2(x, y) : tangled(x, y); });
+    std::vector<Point_2>& rest = grid.rest;
+    std::vector<Point_2>& points = grid.points;
+    const std::vector<char>& fixed = grid.fixed;
+    const Triangles& triangles = grid.triangles;
     auto arrays = [](const std::vector<Point_2>& p) {
       Points2 q;
       for(const Point_2& r : p) q.push_back({{r.x(), r.y()}});
@@ -684,26 +700,12 @@ void test_soups()
 /// the budget and the callback it shares with the direct untangling.
 void test_continuation()
 {
-  // the folded grid soup of test_soups(): rest = grid, border fixed
-  const int n = N;
-  std::vector<Point_2> rest, given;
-  std::vector<char> fixed;
-  Triangles triangles;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) {
-      const double x = double(i) / n, y = double(j) / n;
-      const bool border = i == 0 || j == 0 || i == n || j == n;
-      rest.push_back(Point_2(x, y));
-      // the border sheared and the interior folded: a prescribed motion to follow
-      given.push_back(border ? Point_2(x + 0.5 * y, y) : tangled(x, y));
-      fixed.push_back(border);
-    }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const std::size_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      triangles.push_back({{a, b, d}});
-      triangles.push_back({{a, d, c}});
-    }
+  // the folded grid soup, its border sheared: a prescribed motion to follow
+  const Grid_soup grid([](double x, double y, bool border) { return border ? Point_2(x + 0.5 * y, y) : tangled(x, y); });
+  const std::vector<Point_2>& rest = grid.rest;
+  const std::vector<Point_2>& given = grid.points;
+  const std::vector<char>& fixed = grid.fixed;
+  const Triangles& triangles = grid.triangles;
   const auto is_fixed = boost::make_function_property_map<std::size_t>([&](std::size_t v) -> bool { return fixed[v] != 0; });
   const auto fixed_kept = [&](const std::vector<Point_2>& points) {
     for(std::size_t v = 0; v < points.size(); ++v)
