@@ -13,8 +13,10 @@
 // positions to the given ones in steps, each untangled from the previous,
 // locally invertible, map with phantoms built on that map: every phantom is
 // positive where a step starts, so protection never closes the way, and each
-// step is a small motion from a valid map.  A step that does not end locally
-// invertible is tried again at half the size.
+// step is a small motion from a valid map.  A step is first tried without
+// phantoms, which is cheaper and often enough (the exact check tells); a step
+// that does not end locally invertible with them is tried again at half the
+// size.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 
@@ -88,16 +90,18 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
   };
   // One step: the fixed vertices at `motion` of their way, the free ones
   // from `from`, phantoms (when built) on `from`, which is locally invertible.
-  const auto run_step = [&](const std::vector<Vector>& from, double motion, double seconds, std::size_t eps_steps) {
+  const auto run_step = [&](const std::vector<Vector>& from, double motion, double seconds, std::size_t eps_steps,
+                            bool with_phantoms) {
     Untangling_input<d> step = in;
     step.positions = from;
     for(std::size_t v = 0; v < given.size(); ++v)
       if(step.is_fixed[v]) step.positions[v] = motion < 1 ? ((1 - motion) * rest[v] + motion * given[v]).eval() : given[v];
     Protection_request<d> request = protection;
-    if(build_phantoms) {
+    if(build_phantoms && with_phantoms) {
       Protection_summary unused;
       request.supplied = build_phantom_elements_on<d>(step, from, unused);
     }
+    request.enabled = request.enabled && with_phantoms;
     Untangling_options o = options;
     o.max_seconds = seconds;
     o.max_outer_iterations = eps_steps;
@@ -126,7 +130,14 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     const double motion = std::min(1., reached + increment);
     const double seconds = options.max_seconds - elapsed();
     if(!(seconds > 0) || steps_left() == 0) break;
-    last = run_step(valid, motion, seconds, steps_left());
+    // A step is a small motion from a locally invertible map: without
+    // phantoms (half the elements or fewer) it usually ends locally
+    // invertible too, which the exact check tells; only when it does not are
+    // phantoms built on the last valid map.
+    last = run_step(valid, motion, seconds, steps_left(), !build_phantoms);
+    if(build_phantoms && last.status != Untangling_status::SUCCESS && !stop_requested && steps_left() > 0 &&
+       options.max_seconds - elapsed() > 0)
+      last = run_step(valid, motion, options.max_seconds - elapsed(), steps_left(), true);
     if(last.status == Untangling_status::INVALID_INPUT) return last;
     if(last.status == Untangling_status::SUCCESS) {
       valid = map;
@@ -145,7 +156,7 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
   // vertices must reach their given positions all the same, from the last
   // valid map (after a stop or with no eps step left, the map is only checked).
   if(reached < 1) {
-    last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()), stop_requested ? 0 : steps_left());
+    last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()), stop_requested ? 0 : steps_left(), true);
     if(stop_requested && last.status != Untangling_status::SUCCESS) last.status = Untangling_status::STOPPED_BY_CALLBACK;
   }
   in.positions = map;
