@@ -115,18 +115,27 @@ public:
   std::size_t coloured_element(std::size_t position) const { return coloured_[position]; }
 
   /// Adds the d x d block B (d2F/dx_a dx_b) of the element at `position` in
-  /// colour order where it belongs in the lower triangle; nothing when it
-  /// belongs to the upper one (its transpose, the (b, a) block, is added
-  /// instead) or to a fixed vertex.
+  /// colour order where it belongs in the lower triangle, as B^T in the
+  /// (b, a) block when (a, b) is in the upper one; nothing for a fixed vertex.
+  /// Called once per unordered pair {a, b}.
   template <class Block>
   void add(std::size_t position, int a, int b, const Block& B)
   {
     const Target& t = targets_[(position * (d + 1) + a) * (d + 1) + b];
-    if(t.offset < 0) return;
-    double* values = matrix_.valuePtr() + t.offset;
-    for(int c = 0; c < d; ++c)
-      for(int r = 0; r < d; ++r)
-        values[c * t.stride + r] += B(r, c);
+    if(t.offset >= 0) {
+      double* values = matrix_.valuePtr() + t.offset;
+      for(int c = 0; c < d; ++c)
+        for(int r = 0; r < d; ++r)
+          values[c * t.stride + r] += B(r, c);
+      return;
+    }
+    const Target& u = targets_[(position * (d + 1) + b) * (d + 1) + a];
+    if(u.offset >= 0) {   // B^T is the (b, a) block, in the lower triangle
+      double* values = matrix_.valuePtr() + u.offset;
+      for(int c = 0; c < d; ++c)
+        for(int r = 0; r < d; ++r)
+          values[c * u.stride + r] += B(c, r);
+    }
   }
 
 private:
@@ -296,9 +305,13 @@ public:
             if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
           }
           Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
-          for(int a = 0; a <= d; ++a)
-            for(int b = 0; b <= d; ++b)
+          for(int a = 0; a <= d; ++a) {
+            for(int b = 0; b < a; ++b)
               pattern_.add(position, a, b, M.template block<d, d>(d * a, d * b));
+            Eigen::Matrix<double, d, d> diagonal = M.template block<d, d>(d * a, d * a);
+            diagonal.template triangularView<Eigen::StrictlyUpper>() = diagonal.transpose();
+            pattern_.add(position, a, a, diagonal);
+          }
         }
       });
     }
