@@ -191,6 +191,9 @@ private:
   std::vector<std::size_t> coloured_;          // elements sorted by colour, then index
 };
 
+/// Doublings of an accepted full Newton step at most (see minimize).
+constexpr int max_extrapolations = 4;
+
 template <int d>
 class Newton_solver
 {
@@ -203,13 +206,25 @@ class Newton_solver
 public:
   explicit Newton_solver(const Untangling_problem<d>& P) : pattern_(P) {}
 
-  Inner_statistics minimize(Untangling_problem<d>& P, double eps, double theta, int max_iterations)
+  /// Newton steps on F(., eps) from P.x (P.x receives the result), at most
+  /// `max_iterations`, until the quadratic model predicts a decrease of at
+  /// most `tolerance` |F| (`converged` is then set).
+  Inner_statistics minimize(Untangling_problem<d>& P, double eps, double theta, int max_iterations,
+                            double tolerance)
   {
     Inner_statistics stats;
     const int N = d * pattern_.number_of_free();
-    if(N == 0) return stats;
-    std::vector<double> trial(P.x.size());
+    if(N == 0) { stats.converged = true; return stats; }
+    std::vector<double> trial(P.x.size()), further(P.x.size());
     Eigen::VectorXd g(N), step(N);
+    auto move = [&](double alpha, std::vector<double>& to) {
+      to = P.x;
+      for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
+        const int f = pattern_.free_index(v);
+        if(f >= 0)
+          for(int c = 0; c < d; ++c) to[d * v + c] += alpha * step[d * f + c];
+      }
+    };
 
     double E = assemble(P, eps, theta, g);
     ++stats.evaluations;
@@ -219,7 +234,8 @@ public:
       ++stats.iterations;
       if(!solve(g, step)) { stats.finite = false; break; }
       const double slope = g.dot(step);     // < 0: descent direction
-      if(!(slope < 0)) break;
+      const double predicted = -slope / 2;  // the model's decrease: half the squared Newton decrement
+      if(!(slope < 0)) { stats.converged = true; break; }
 
       // Armijo backtracking on F(., eps), which is finite everywhere for eps > 0.
       // The full step is nearly always accepted, and the next Newton step
@@ -229,16 +245,12 @@ public:
       // which nothing needs the derivatives, compute the energy alone.
       const bool last = it + 1 == max_iterations;
       double alpha = 1, E_trial = E;
-      bool accepted = false, accepted_assembled = false;
-      for(int ls = 0; ls < 40 && !accepted; ++ls, alpha /= 2) {
-        trial = P.x;
-        for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
-          const int f = pattern_.free_index(v);
-          if(f >= 0)
-            for(int c = 0; c < d; ++c) trial[d * v + c] += alpha * step[d * f + c];
-        }
-        const bool assemble_trial = ls == 0 && !last;
-        if(assemble_trial) {
+      bool accepted = false, assembled = false;
+      for(int ls = 0; ls < 40 && !accepted; ++ls) {
+        if(ls > 0) alpha /= 2;
+        move(alpha, trial);
+        assembled = ls == 0 && !last;
+        if(assembled) {
           P.x.swap(trial);
           E_trial = assemble(P, eps, theta, g);   // g and H now belong to the trial
           P.x.swap(trial);
@@ -247,21 +259,35 @@ public:
         }
         ++stats.evaluations;
         accepted = std::isfinite(E_trial) && E_trial <= E + 1e-4 * alpha * slope;
-        accepted_assembled = accepted && assemble_trial;
       }
       if(!accepted) break;
+
+      // A full step that gained more than the model promised says that the
+      // model is too curved along it (projecting each element's Hessian adds
+      // curvature the energy does not have, most near the barrier): go
+      // further along the same direction while the energy keeps decreasing.
+      if(assembled && E - E_trial > 1.2 * predicted)
+        for(int k = 0; k < max_extrapolations; ++k) {
+          move(2 * alpha, further);
+          const double E_further = energy<d>(P, further.data(), eps, theta);
+          ++stats.evaluations;
+          if(!(E_further < E_trial)) break;
+          alpha *= 2;
+          E_trial = E_further;
+          trial.swap(further);
+          assembled = false;
+        }
       P.x.swap(trial);
       const double decrease = E - E_trial;
       if(last) break;
-      if(accepted_assembled) {
+      if(assembled) {
         E = E_trial;
       } else {
         E = assemble(P, eps, theta, g);
         ++stats.evaluations;
         if(!std::isfinite(E)) { stats.finite = false; break; }
       }
-      // The Newton decrement says how far the quadratic model still sees to go.
-      if(decrease <= 1e-9 * std::abs(E) || -slope <= 1e-12 * std::abs(E)) break;
+      if(decrease <= 1e-9 * std::abs(E) || predicted <= tolerance * std::abs(E)) { stats.converged = true; break; }
     }
     return stats;
   }
