@@ -158,13 +158,13 @@ public:
 
 private:
   /// Inner iterations per eps step: the caller's, else the published
-  /// limits for L-BFGS; Newton gets a few more once the map is valid, where
+  /// limits for L-BFGS; Newton gets many more once the map is valid, where
   /// its inner solve is the whole remaining work.
   int inner_iterations(bool valid) const
   {
     if(options_.max_inner_iterations >= 0) return options_.max_inner_iterations;
     if(options_.solver == Solver::LBFGS) return published_inner_iterations<d>();
-    return valid ? 10 : 6;
+    return valid ? 50 : 6;
   }
 
   const Untangling_options& options_;
