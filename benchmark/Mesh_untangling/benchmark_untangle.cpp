@@ -124,6 +124,13 @@ std::string short_status(MU::Untangling_status status)
 
 /// FNV-1a over the bytes of the map's coordinates: equal hashes mean
 /// (barring collisions) bitwise equal results.
+std::string format_energy(double value)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
 std::string positions_hash(const Mesh_file& mesh)
 {
   std::uint64_t h = 14695981039346656037ull;
@@ -168,6 +175,9 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     send("seconds", std::to_string(seconds));
     send("eps_steps", std::to_string(result.outer_iterations));
     send("evaluations", std::to_string(result.energy_evaluations));
+    send("iterations", std::to_string(result.inner_iterations));
+    send("energy", format_energy(result.final_energy));
+    send("final_eps", format_energy(result.final_epsilon));
     send("status", short_status(result.status));
     send("status_success", result.status == MU::Untangling_status::SUCCESS ? "1" : "0");
     send("hash", positions_hash(p.mesh));
@@ -355,14 +365,14 @@ std::string table(const std::vector<Row>& rows)
 {
   const std::vector<std::string> header = {"case", "#vertices", "#elements", "#fixed", "solver",
                                            "inverted before", "inverted after", "input defects", "success",
-                                           "seconds", "eps steps", "energy evaluations", "peak memory (MiB)",
-                                           "result hash"};
+                                           "seconds", "eps steps", "solver iterations", "energy evaluations",
+                                           "final energy", "final eps", "peak memory (MiB)", "result hash"};
   std::vector<std::vector<std::string>> cells;
   for(const Row& r : rows) {
     cells.push_back({r.case_name, r.get("vertices"), r.get("elements"), r.get("fixed"), r.solver,
                      r.get("inverted_before"), r.get("inverted_after"), r.get("input_defects"), r.outcome,
                      r.has("seconds") ? format_seconds(r.seconds()) : "—", r.get("eps_steps"),
-                     r.get("evaluations"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—", r.get("hash")});
+                     r.get("iterations"), r.get("evaluations"), r.get("energy"), r.get("final_eps"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—", r.get("hash")});
     for(std::string& cell : cells.back()) cell = escape_cell(cell);
   }
   std::vector<std::size_t> width(header.size());
@@ -371,7 +381,7 @@ std::string table(const std::vector<Row>& rows)
     for(const auto& line : cells) width[k] = std::max(width[k], display_width(line[k]));
   }
   // numbers right-aligned, text left-aligned
-  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8 && k != 13; };
+  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8 && k != 16; };
   std::ostringstream out;
   auto print_line = [&](const std::vector<std::string>& line) {
     out << "|";

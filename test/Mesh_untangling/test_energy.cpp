@@ -98,6 +98,37 @@ void check_epsilon_rule()
   CHECK(!energy_settled(1.0, 1.1, 0.1));
 }
 
+/// The Newton schedule: the published rule with a floor on sigma that rises
+/// while Newton converges in two steps, falls back when it does not converge,
+/// and tiny eps once every element is positive.
+void check_adaptive_epsilon()
+{
+  Adaptive_epsilon a;
+  CHECK(a.sigma_floor() == 0.1);
+  // Not converged at the published floor: it stays there, and eps is the published one.
+  CHECK(a.next(0.5, 9.99, 10., -0.1, 6, false) == next_epsilon(0.5, 9.99, 10., -0.1));
+  CHECK(a.sigma_floor() == 0.1);
+  // Easy steps halve 1 - floor each time, up to 0.9: 0.55, 0.775, 0.8875, 0.9
+  const double eps = a.next(0.5, 9.99, 10., -0.1, 2, true);
+  CHECK(std::abs(a.sigma_floor() - 0.55) < 1e-15);
+  CHECK(eps == next_epsilon(0.5, 9.99, 10., -0.1, 0.55) && eps < next_epsilon(0.5, 9.99, 10., -0.1));
+  a.next(0.5, 9.99, 10., -0.1, 1, true);
+  CHECK(std::abs(a.sigma_floor() - 0.775) < 1e-15);
+  for(int k = 0; k < 60; ++k) a.next(0.5, 9.99, 10., -0.1, 1, true);
+  CHECK(a.sigma_floor() == 0.9);
+  // A converged solve that needed more steps keeps the floor; a failed one doubles the gap.
+  const double before = a.sigma_floor();
+  a.next(0.5, 9.99, 10., -0.1, 4, true);
+  CHECK(a.sigma_floor() == before);
+  a.next(0.5, 9.99, 10., -0.1, 6, false);
+  CHECK(std::abs((1 - a.sigma_floor()) - 2 * (1 - before)) < 1e-15);
+  // Every element positive: the barrier alone, whatever the energies.
+  CHECK(a.next(0.5, 5., 10., 1e-9, 6, false) == tiny_epsilon);
+  // Never below the tiny eps.
+  Adaptive_epsilon b;
+  CHECK(b.next(1e-12, 1., 10., -1e-20, 1, true) >= tiny_epsilon);
+}
+
 int main()
 {
   std::mt19937 random(7);
@@ -109,6 +140,7 @@ int main()
   check_assembled_gradient<3>(random);
   check_regularized_determinant();
   check_epsilon_rule();
+  check_adaptive_epsilon();
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();
 }

@@ -28,6 +28,7 @@ struct Inner_statistics
   std::size_t iterations = 0;
   std::size_t evaluations = 0;
   bool finite = true;
+  bool converged = false;   // the solver's own stopping test was met
 };
 
 /// The inner iteration limit of the published code (3000 quasi-Newton

@@ -44,7 +44,6 @@ struct Untangling_options
   bool give_up_on_stall = false;
 };
 
-constexpr std::size_t stall_steps = 40;   // eps steps without fewer non-positive elements
 constexpr int max_restarts = 10;           // shakes in stage 1
 
 template <int d>
@@ -106,21 +105,29 @@ public:
   /// Partial minimizations of F(., eps) from P.x until the energy settles
   /// with every element positive.  With `patience` > 0, also gives up when
   /// the count of non-positive elements has not gone down for that many steps.
+  ///
+  /// L-BFGS follows the published scheme exactly.  Newton follows
+  /// Adaptive_epsilon, and each of its inner solves runs until the quadratic
+  /// model predicts a relative decrease below 1e-4 (1e-5 from a valid map,
+  /// where eps is tiny and a converged solve is the end: free boundaries have
+  /// soft modes, rigid motions and scaling, that a looser test leaves
+  /// visibly short of the minimum) or a few steps.
   Eps_loop_outcome run(Untangling_problem<d>& P, int stage, std::size_t patience = 0)
   {
     Eps_loop_outcome out;
     std::unique_ptr<Newton_solver<d>> newton;
     if(options_.solver == Solver::NEWTON) newton = std::make_unique<Newton_solver<d>>(P);
-    const int max_inner = options_.max_inner_iterations >= 0 ? options_.max_inner_iterations
-                          : (options_.solver == Solver::NEWTON ? 3 : published_inner_iterations<d>());
+    Adaptive_epsilon adaptive;
     auto summary = determinant_summary(P, P.x.data());
-    double eps = initial_epsilon(summary.min_det);
+    double eps = newton && summary.min_det > 0 ? tiny_epsilon : initial_epsilon(summary.min_det);
     std::size_t best = summary.non_positive, since_best = 0;
     while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
-      const Inner_statistics inner = newton ? newton->minimize(P, eps, theta_, max_inner)
-                                            : LBFGS_solver<d>().minimize(P, eps, theta_, max_inner);
+      const bool valid = summary.min_det > 0;
+      const Inner_statistics inner =
+        newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? 1e-6 : 1e-4)
+               : LBFGS_solver<d>().minimize(P, eps, theta_, inner_iterations(valid));
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
@@ -133,18 +140,38 @@ public:
       const Untangling_step info{steps_++, eps, E_prev, E, summary.min_det, summary.non_positive,
                                  inner.iterations, inner.evaluations, seconds(), stage};
       if(options_.callback && !options_.callback(info)) { out.stopped = true; break; }
-      if(energy_settled(E, E_prev, summary.min_det)) { out.settled = true; break; }
+      // Newton's end is a converged solve from a valid map (the published
+      // test on the energy change would stop it after a loose tangled-phase solve).
+      const bool settled = newton ? valid && inner.converged && summary.min_det > 0
+                                  : energy_settled(E, E_prev, summary.min_det);
+      if(settled) { out.settled = true; break; }
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }
       // Below tiny_epsilon the energy of a flat element overflows long before
       // it helps: the floor keeps the problem numerically solvable.
-      eps = std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon);
+      eps = newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
+                   : std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon);
       if(out_of_time()) { out.stopped = true; break; }
     }
     return out;
   }
 
+  /// Steps without fewer non-positive elements before a stage gives up:
+  /// Newton has settled each eps when L-BFGS has barely started, so it
+  /// needs less patience to see a stall.
+  std::size_t stall_patience() const { return options_.solver == Solver::NEWTON ? 10 : 40; }
+
 private:
+  /// Inner iterations per eps step: the caller's, else the published
+  /// limits for L-BFGS; Newton gets many more once the map is valid, where
+  /// its inner solve is the whole remaining work.
+  int inner_iterations(bool valid) const
+  {
+    if(options_.max_inner_iterations >= 0) return options_.max_inner_iterations;
+    if(options_.solver == Solver::LBFGS) return published_inner_iterations<d>();
+    return valid ? 50 : 6;
+  }
+
   const Untangling_options& options_;
   const double theta_;
   Untangling_result& result_;
@@ -256,17 +283,17 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
 
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
-  Eps_loop_outcome outcome = loop.run(P, 0, stall_steps);
+  Eps_loop_outcome outcome = loop.run(P, 0, loop.stall_patience());
   if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
-    if(targets_given) outcome = loop.run(R, 1, stall_steps);
+    if(targets_given) outcome = loop.run(R, 1, loop.stall_patience());
     // Still stuck: typically free vertices collapsed onto each other, a
     // symmetric configuration the gradient cannot break.  Shake the vertices
     // of the non-positive elements and go on.
     std::mt19937 random(1);
     for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
       shake_non_positive_elements(R, random);
-      outcome = loop.run(R, 1, stall_steps);
+      outcome = loop.run(R, 1, loop.stall_patience());
     }
     const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
     P.x = R.x;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -26,14 +27,42 @@ inline double initial_epsilon(double min_det)
   return std::sqrt(1e-12 + 0.04 * m * m);
 }
 
-/// sigma = max(1 - E/E_prev, 0.1), mu = (1 - sigma) chi(min_det, eps),
+/// sigma = max(1 - E/E_prev, sigma_floor), mu = (1 - sigma) chi(min_det, eps),
 /// eps <- 2 sqrt(mu (mu - min_det)) if min_det < mu, else a tiny eps.
-inline double next_epsilon(double eps, double E, double E_prev, double min_det)
+/// The published floor is 0.1.
+inline double next_epsilon(double eps, double E, double E_prev, double min_det, double sigma_floor = 0.1)
 {
-  const double sigma = std::max(1 - E / E_prev, 0.1);
+  const double sigma = std::max(1 - E / E_prev, sigma_floor);
   const double mu = (1 - sigma) * Regularized_determinant(min_det, eps).value;
   return min_det < mu ? 2 * std::sqrt(mu * (mu - min_det)) : tiny_epsilon;
 }
+
+/// The schedule of the Newton solver.  The published rule shrinks
+/// chi(min det J) by at least 10 % per step, a pace set for an inner solver
+/// that only partially minimizes; Newton minimizes F(., eps) in a few steps,
+/// so the floor of sigma follows how easily it does: 1 - floor halves (the
+/// floor rising to 0.9 at most) after an inner solve that converged in at most
+/// two Newton steps, and doubles (the floor falling back to the published 0.1
+/// at least) after one that did not converge.
+/// Once every element is positive, eps has nothing left to do but slow
+/// the barrier down: it drops to tiny_epsilon at once, and the inner solves
+/// minimize the (practically unregularized) energy from a valid map.
+class Adaptive_epsilon
+{
+public:
+  double next(double eps, double E, double E_prev, double min_det, std::size_t newton_steps, bool converged)
+  {
+    if(min_det > 0) return tiny_epsilon;
+    if(converged && newton_steps <= 2) sigma_floor_ = std::min(0.9, 1 - (1 - sigma_floor_) / 2);
+    else if(!converged) sigma_floor_ = std::max(0.1, 1 - 2 * (1 - sigma_floor_));
+    return std::max(next_epsilon(eps, E, E_prev, min_det, sigma_floor_), tiny_epsilon);
+  }
+
+  double sigma_floor() const { return sigma_floor_; }
+
+private:
+  double sigma_floor_ = 0.1;
+};
 
 /// The outer loop stops once every element is positive and the energy has settled.
 inline bool energy_settled(double E, double E_prev, double min_det)

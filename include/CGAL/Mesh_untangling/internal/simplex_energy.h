@@ -16,6 +16,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -50,8 +52,19 @@ void signed_svd(const Eigen::Matrix<double, d, d>& J, Eigen::Matrix<double, d, d
 {
   using Matrix = Eigen::Matrix<double, d, d>;
   using Vector = Eigen::Matrix<double, d, 1>;
-  Matrix A = J;
   V.setIdentity();
+  if constexpr(d == 3) {
+    // Start from the eigenvectors of J^T J in closed form (Eigen's direct
+    // 3 x 3 solver): they are nearly right, so the sweeps below only polish
+    // them (about half the time of Jacobi from the identity).  Made exactly
+    // orthonormal first, since the sweeps keep whatever V is.
+    Eigen::SelfAdjointEigenSolver<Matrix> eigen;
+    eigen.computeDirect(J.transpose() * J);
+    const Vector v0 = eigen.eigenvectors().col(2).normalized();
+    const Vector v1 = (eigen.eigenvectors().col(1) - eigen.eigenvectors().col(1).dot(v0) * v0).normalized();
+    if(v0.allFinite() && v1.allFinite()) V << v0, v1, v0.cross(v1);
+  }
+  Matrix A = J * V;
   const double tolerance = 4 * std::numeric_limits<double>::epsilon();
   for(int sweep = 0; sweep < 32; ++sweep) {
     bool rotated = false;
@@ -103,9 +116,85 @@ void signed_svd(const Eigen::Matrix<double, d, d>& J, Eigen::Matrix<double, d, d
   if(V.determinant() < 0) { V.col(d - 1) *= -1; sigma(d - 1) *= -1; }
 }
 
+/// Eigenvalues and orthonormal eigenvectors of a symmetric d x d matrix:
+/// cyclic Jacobi rotations, started in 3D from Eigen's closed-form solution
+/// (fast, but not accurate on ill-conditioned matrices) so that one or two
+/// sweeps polish it to working precision; several times faster than
+/// Eigen's iterative solver on these tiny matrices.
+template <int d>
+void symmetric_eigen(const Eigen::Matrix<double, d, d>& S, Eigen::Matrix<double, d, 1>& lambda,
+                     Eigen::Matrix<double, d, d>& W)
+{
+  using Matrix = Eigen::Matrix<double, d, d>;
+  W.setIdentity();
+  if constexpr(d == 3) {
+    Eigen::SelfAdjointEigenSolver<Matrix> eigen;
+    eigen.computeDirect(S);
+    const Eigen::Vector3d w0 = eigen.eigenvectors().col(0).normalized();
+    const Eigen::Vector3d w1 = (eigen.eigenvectors().col(1) - eigen.eigenvectors().col(1).dot(w0) * w0).normalized();
+    if(w0.allFinite() && w1.allFinite()) W << w0, w1, w0.cross(w1);
+  }
+  Matrix A = W.transpose() * S * W;
+  const double tolerance = std::numeric_limits<double>::epsilon();
+  for(int sweep = 0; sweep < 32; ++sweep) {
+    bool rotated = false;
+    for(int p = 0; p < d; ++p)
+      for(int q = p + 1; q < d; ++q) {
+        if(!(std::abs(A(p, q)) > tolerance * std::sqrt(std::abs(A(p, p) * A(q, q))))) continue;
+        rotated = true;
+        // the rotation that zeroes A(p, q)
+        const double zeta = (A(q, q) - A(p, p)) / (2 * A(p, q));
+        const double t = (zeta >= 0 ? 1. : -1.) / (std::abs(zeta) + std::sqrt(1 + zeta * zeta));
+        const double c = 1 / std::sqrt(1 + t * t), s = c * t;
+        for(int k = 0; k < d; ++k) {
+          const double ap = A(k, p), aq = A(k, q);
+          A(k, p) = c * ap - s * aq;  A(k, q) = s * ap + c * aq;
+        }
+        for(int k = 0; k < d; ++k) {
+          const double ap = A(p, k), aq = A(q, k);
+          A(p, k) = c * ap - s * aq;  A(q, k) = s * ap + c * aq;
+          const double wp = W(k, p), wq = W(k, q);
+          W(k, p) = c * wp - s * wq;  W(k, q) = s * wp + c * wq;
+        }
+      }
+    if(!rotated) break;
+  }
+  lambda = A.diagonal();
+}
+
 template <int d>
 struct Simplex_energy
 {
+  /// a^(-2/d) for a > 0, without std::pow (the energy pass spent a fifth of
+  /// its time there, and still a tenth in std::cbrt)
+  static double inverse_power(double a)
+  {
+    if constexpr(d == 2) {
+      return 1 / a;
+    } else {
+      const double r = cube_root(a);
+      return 1 / (r * r);
+    }
+  }
+
+  /// a^(1/3) for a > 0: a guess from the exponent bits (within a few %),
+  /// then three Halley steps (cubic convergence: below 1e-16 relative).
+  static double cube_root(double a)
+  {
+    if(!(a >= std::numeric_limits<double>::min() && a <= std::numeric_limits<double>::max()))
+      return std::cbrt(a);   // subnormal, infinite or NaN: the library's care
+    std::uint64_t bits;
+    std::memcpy(&bits, &a, sizeof a);
+    bits = (bits / 3) + (std::uint64_t(715094163) << 32);   // a third of the exponent (as in fdlibm's cbrt)
+    double r;
+    std::memcpy(&r, &bits, sizeof r);
+    for(int k = 0; k < 3; ++k) {
+      const double r3 = r * r * r;
+      r *= (r3 + 2 * a) / (2 * r3 + a);
+    }
+    return r;
+  }
+
   using Jacobian = Eigen::Matrix<double, d, d>;
   using Hessian = Eigen::Matrix<double, d * d, d * d>;
   using Flat = Eigen::Matrix<double, d * d, 1>;   // J flattened column by column
@@ -117,7 +206,7 @@ struct Simplex_energy
   {
     const double D = J.determinant();
     const Regularized_determinant chi(D, eps);
-    return (1 - theta) * J.squaredNorm() / d / std::pow(chi.value, 2. / d)
+    return (1 - theta) * J.squaredNorm() / d * inverse_power(chi.value)
          + theta * (1 + D * D) / (2 * chi.value);
   }
 
@@ -151,7 +240,7 @@ struct Simplex_energy
     const double s = J.squaredNorm();
     const double a = chi.value, a1 = chi.first, a2 = chi.second;
     const double p = 2. / d;
-    const double ap = std::pow(a, -p);  // chi^(-2/d)
+    const double ap = inverse_power(a);  // chi^(-2/d)
 
     // f = A(s, D) = shape(s, D) + size(D)
     const double shape_weight = (1 - theta) / d;
@@ -232,10 +321,12 @@ struct Simplex_energy
                 + (i == j ? 2 * A.s : A.D * other(i, j));
     if(negative_only && is_positive_definite(S))
       return;   // no negative scaling mode
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, d, d>> scaling(S);
+    Eigen::Matrix<double, d, 1> lambda;
+    Eigen::Matrix<double, d, d> W;
+    symmetric_eigen<d>(S, lambda, W);
     for(int m = 0; m < d; ++m)
-      if(!negative_only || scaling.eigenvalues()(m) < 0)
-        mode(scaling.eigenvalues()(m), Jacobian(U * scaling.eigenvectors().col(m).asDiagonal() * V.transpose()));
+      if(!negative_only || lambda(m) < 0)
+        mode(lambda(m), Jacobian(U * W.col(m).asDiagonal() * V.transpose()));
   }
 
   /// d2F/dJ2 with its negative eigenvalues set to zero, from the closed-form
@@ -253,7 +344,7 @@ struct Simplex_energy
   using Gradient_operator = Eigen::Matrix<double, d + 1, d>;             // J = X G, X = [x_0 ... x_d]
   using Vertex_hessian = Eigen::Matrix<double, d * (d + 1), d * (d + 1)>;  // X flattened column by column
 
-  /// M = weight * K^T P K, P the projected d2F/dJ2 and K the d^2 x d(d+1) map
+  /// The lower triangle of M = weight * K^T P K, P the projected d2F/dJ2 and K the d^2 x d(d+1) map
   /// vec X -> vec J (K = G^T (x) I_d): the element's Hessian in its vertex
   /// coordinates.  Built from the same terms as P rather than by products
   /// with K: with j~ = vec(J G^T), c~ = vec(C G^T), e~ = vec(E G^T),
@@ -271,12 +362,15 @@ struct Simplex_energy
     const Vertex_matrix JG = J * G.transpose(), CG = A.C * G.transpose();
     const Eigen::Map<const Vertex_vector> j(JG.data()), c(CG.data());
     const Vertex_vector y = weight * (2 * A.sD * j + (A.DD / 2) * c);
-    M.noalias() = c * y.transpose();
-    M.noalias() += y * c.transpose();
+    // M is symmetric and its users read one triangle: only the lower one is
+    // computed, which halves the rank updates (the bulk of the work).
+    constexpr int n = d * (d + 1);
+    for(int col = 0; col < n; ++col)
+      for(int row = col; row < n; ++row) M(row, col) = c(row) * y(col) + y(row) * c(col);
     const Eigen::Matrix<double, d + 1, d + 1> L = (2 * weight * A.s) * (G * G.transpose());
     const double wD = weight * A.D;
     for(int a = 0; a <= d; ++a)
-      for(int b = 0; b <= d; ++b) {
+      for(int b = 0; b <= a; ++b) {
         auto block = M.template block<d, d>(d * a, d * b);
         block.diagonal().array() += L(a, b);
         if(a == b) continue;
@@ -291,13 +385,14 @@ struct Simplex_energy
           block(2, 0) += t(1); block(0, 2) -= t(1);
         }
       }
-    if(is_positive_definite(unprojected_hessian(J, A)))
-      return;   // nothing to clamp, no SVD needed
-    for_each_eigenpair(J, A, [&](double lambda, const Jacobian& E) {
-      const Vertex_matrix EG = E * G.transpose();
-      const Eigen::Map<const Vertex_vector> e(EG.data());
-      M.noalias() -= (weight * lambda * e) * e.transpose();
-    }, true);
+    if(!is_positive_definite(unprojected_hessian(J, A)))   // else nothing to clamp, no SVD needed
+      for_each_eigenpair(J, A, [&](double lambda, const Jacobian& E) {
+        const Vertex_matrix EG = E * G.transpose();
+        const Eigen::Map<const Vertex_vector> e(EG.data());
+        const Vertex_vector scaled = (-weight * lambda) * e;
+        for(int col = 0; col < n; ++col)
+          for(int row = col; row < n; ++row) M(row, col) += scaled(row) * e(col);
+      }, true);
   }
 
   static Jacobian cofactor(const Jacobian& J)
