@@ -431,7 +431,8 @@ int main(int argc, char** argv)
                "no inverted element, but stars may be covered twice)");
   app.add_option("--continuation", args.continuation, "move the fixed vertices from their rest positions in steps, "
                  "each untangled from the previous map (needs a rest shape in the map's dimension and a fixed vertex; "
-                 "the free vertices start at rest): 'auto' when the direct untangling fails, 'never', 'always'")
+                 "the free vertices start at rest): 'auto' when the direct untangling of a free-boundary problem fails, "
+                 "'never', 'always'")
     ->check(CLI::IsMember({"auto", "never", "always"}));
   app.add_option("--continuation-steps", args.continuation_steps, "equal steps the continuation starts with "
                  "(a failed step is halved)")->check(CLI::PositiveNumber);

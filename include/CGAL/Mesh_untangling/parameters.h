@@ -59,7 +59,7 @@ enum class Target_scaling
 /// their rest positions, so their given positions are not used.
 enum class Continuation
 {
-  AUTOMATIC,   ///< when the direct untangling does not end locally invertible (default)
+  AUTOMATIC,   ///< with a free boundary vertex, when the direct untangling does not end locally invertible (default)
   NEVER,       ///< the direct untangling only: the published scheme
   ALWAYS       ///< the continuation only (where it applies; otherwise the direct untangling)
 };

@@ -204,13 +204,18 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
       // reported by the direct untangling, which validates the same way
     }
   }
-  if(!rest) return untangle_directly<d>(in, options, protection, phantoms_used);
-  if(options.continuation == Continuation::ALWAYS)
+  // With every boundary vertex fixed there is no k-covering trap to avoid,
+  // and on such problems (CuboidBlocks) the continuation did not rescue any
+  // case the direct untangling failed: AUTOMATIC leaves them to it.
+  const bool automatic = options.continuation == Continuation::AUTOMATIC;
+  if(!rest || (automatic && !has_free_boundary_vertex<d>(in)))
+    return untangle_directly<d>(in, options, protection, phantoms_used);
+  if(!automatic)
     return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
 
-  // AUTOMATIC.  With phantoms built in the rest shape, a stall of the direct
-  // untangling is the sign that they block it (see above): do not spend the
-  // stage fallbacks on it.
+  // With phantoms built in the rest shape, a stall of the direct untangling
+  // is the sign that they block it (see above): do not spend the stage
+  // fallbacks on it.
   const auto given = in.positions;
   Untangling_options direct = options;
   direct.give_up_on_stall = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
