@@ -6,7 +6,7 @@
 // of one run does not stop the others.  Prints a markdown table and, per pair
 // of solvers, how many cases each solved and the median ratio of their times.
 //
-//   benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...
+//   benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...
 //
 // Run with --help for the forms of CASE.
 
@@ -55,12 +55,13 @@ using namespace Mesh_untangling_tools;
 namespace {
 
 const char* const usage_text =
-  "usage: benchmark_untangle [--solver newton,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...\n"
+  "usage: benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...\n"
   "\n"
   "Runs the untangler on every CASE with every solver, each run in its own process,\n"
   "and prints a markdown table (stdout, and FILE with --markdown).\n"
   "\n"
-  "  --solver LIST        comma-separated solvers among newton, lbfgs (default: newton,lbfgs)\n"
+  "  --solver LIST        comma-separated solvers among auto (the default solver), newton, lbfgs\n"
+  "                       (the published scheme); default: auto,lbfgs\n"
   "  --time-limit SECONDS time limit of one run (default: 120), passed to the untangler;\n"
   "                       a run still going 30 s past it is killed (SIGKILL)\n"
   "  --threads N          at most N threads in the untangler's parallel loops (TBB global_control;\n"
@@ -173,6 +174,7 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     const Untangling_result result = untangle_mesh_file(p.mesh, p.is_fixed, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     send("seconds", std::to_string(seconds));
+    send("solver", one_line(result.solver));
     send("eps_steps", std::to_string(result.outer_iterations));
     send("evaluations", std::to_string(result.energy_evaluations));
     send("iterations", std::to_string(result.inner_iterations));
@@ -369,7 +371,9 @@ std::string table(const std::vector<Row>& rows)
                                            "final energy", "final eps", "peak memory (MiB)", "result hash"};
   std::vector<std::vector<std::string>> cells;
   for(const Row& r : rows) {
-    cells.push_back({r.case_name, r.get("vertices"), r.get("elements"), r.get("fixed"), r.solver,
+    const std::string ran = r.get("solver", r.solver);
+    cells.push_back({r.case_name, r.get("vertices"), r.get("elements"), r.get("fixed"),
+                     ran == r.solver ? r.solver : r.solver + ": " + ran,
                      r.get("inverted_before"), r.get("inverted_after"), r.get("input_defects"), r.outcome,
                      r.has("seconds") ? format_seconds(r.seconds()) : "—", r.get("eps_steps"),
                      r.get("iterations"), r.get("evaluations"), r.get("energy"), r.get("final_eps"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—", r.get("hash")});
@@ -424,16 +428,19 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
   for(std::size_t a = 0; a < solvers.size(); ++a)
     for(std::size_t b = a + 1; b < solvers.size(); ++b) {
       std::size_t solved_a = 0, solved_b = 0;
-      std::vector<double> ratios;
+      std::vector<double> ratios, bounds;   // bounds: every case either solved, at a lower bound of its ratio
       std::vector<std::string> only_a, only_b;
       for(std::size_t c = 0; c < cases.size(); ++c) {
         const Row& ra = row_of(c, a);
         const Row& rb = row_of(c, b);
         solved_a += ra.success;
         solved_b += rb.success;
-        if(ra.success && rb.success) ratios.push_back(std::max(rb.seconds(), 1e-6) / std::max(ra.seconds(), 1e-6));
+        const double ratio = std::max(rb.seconds(), 1e-6) / std::max(ra.seconds(), 1e-6);
+        if(ra.success && rb.success) ratios.push_back(ratio);
         else if(ra.success) only_a.push_back(cases[c].name);
         else if(rb.success) only_b.push_back(cases[c].name);
+        // a lower bound of the ratio: b had not finished when it stopped; 0 where only b solved
+        if(ra.success || rb.success) bounds.push_back(ra.success ? ratio : 0.);
       }
       out << "\n**" << solvers[a] << " vs " << solvers[b] << "** (" << cases.size() << " cases): "
           << solvers[a] << " solved " << solved_a << ", " << solvers[b] << " solved " << solved_b << ".\n\n";
@@ -443,6 +450,11 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
         out << "- median time ratio " << solvers[b] << "/" << solvers[a] << ": " << format_fixed(median(ratios), 2)
             << " over the " << ratios.size() << " case(s) both solved (min " << format_fixed(*std::min_element(ratios.begin(), ratios.end()), 2)
             << ", max " << format_fixed(*std::max_element(ratios.begin(), ratios.end()), 2) << ")\n";
+      if(bounds.size() > ratios.size())
+        out << "- median time ratio " << solvers[b] << "/" << solvers[a] << " over the " << bounds.size()
+            << " case(s) either solved, at a lower bound (solved only by " << solvers[a] << ": the time "
+            << solvers[b] << " took before it stopped; solved only by " << solvers[b] << ": 0): "
+            << format_fixed(median(bounds), 2) << "\n";
       out << "- solved only by " << solvers[a] << ": " << escape_cell(join(only_a)) << "\n";
       out << "- solved only by " << solvers[b] << ": " << escape_cell(join(only_b)) << "\n";
     }
@@ -458,7 +470,7 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
 
 struct Arguments
 {
-  std::vector<std::string> solvers = {"newton", "lbfgs"};
+  std::vector<std::string> solvers = {"auto", "lbfgs"};
   double time_limit = 120;
   int threads = 0;   // 0: TBB's default
   std::string markdown;
@@ -496,8 +508,8 @@ Arguments parse_arguments(int argc, char** argv)
     if(name == "--solver") {
       a.solvers = split(value, ',');
       for(std::size_t k = 0; k < a.solvers.size(); ++k) {
-        if(a.solvers[k] != "newton" && a.solvers[k] != "lbfgs")
-          throw Usage_error{"unknown solver '" + a.solvers[k] + "' (newton, lbfgs)"};
+        if(a.solvers[k] != "auto" && a.solvers[k] != "newton" && a.solvers[k] != "lbfgs")
+          throw Usage_error{"unknown solver '" + a.solvers[k] + "' (auto, newton, lbfgs)"};
         if(std::find(a.solvers.begin(), a.solvers.begin() + k, a.solvers[k]) != a.solvers.begin() + k)
           throw Usage_error{"solver '" + a.solvers[k] + "' is listed twice"};
       }

@@ -61,16 +61,15 @@ double copy_bandwidth()
 /// Bytes the energy + gradient pass (internal::energy with a gradient) must
 /// move at least, if every array is streamed once and each vertex's
 /// coordinates and gradient stay in cache while its elements are visited:
-/// per element its vertex ids (twice: the element pass, then the serial
-/// gradient gather), gradient operator, weight and fixed flags, its element
-/// gradient (written, then read back); per vertex its coordinates (read) and
-/// its gradient (cleared, then written).
+/// per element its vertex ids, gradient operator, weight and fixed flags;
+/// per vertex its coordinates (read) and its gradient
+/// (cleared, then read and written back).
 template <int d>
 double bytes_moved(const MU::internal::Untangling_problem<d>& P)
 {
-  const double per_element = 2. * (d + 1) * sizeof(std::size_t) + (d + 1) * d * sizeof(double) + sizeof(double) +
-                             (d + 1) * sizeof(char) + 2. * d * (d + 1) * sizeof(double);
-  const double per_vertex = 3. * d * sizeof(double);
+  const double per_element =
+      (d + 1) * sizeof(std::size_t) + (d + 1) * d * sizeof(double) + sizeof(double) + (d + 1) * sizeof(char);
+  const double per_vertex = 4. * d * sizeof(double);
   return per_element * P.elements.size() + per_vertex * P.number_of_vertices;
 }
 

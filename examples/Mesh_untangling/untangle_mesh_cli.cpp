@@ -31,7 +31,7 @@ namespace {
 
 struct Arguments
 {
-  std::string input, rest, fixed, output, report, solver = "newton", init = "given", continuation = "auto";
+  std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto";
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
   bool fix_boundary = false, quiet = false, no_phantoms = false;
@@ -419,7 +419,9 @@ int main(int argc, char** argv)
   app.add_option("-o,--output", args.output, "result (format by extension; .vtk adds per-cell det J, distortions and "
                  "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");
   app.add_option("--report", args.report, "JSON report with every figure");
-  app.add_option("--solver", args.solver, "inner solver")->check(CLI::IsMember({"newton", "lbfgs"}));
+  app.add_option("--solver", args.solver, "inner solver: auto (newton, or lbfgs where a Newton factorization "
+                 "would cost too much), newton, lbfgs (the published scheme); default auto")
+    ->check(CLI::IsMember({"auto", "newton", "lbfgs"}));
   app.add_option("--theta", args.theta, "size/shape trade-off in [0, 1]; default 1/128 (2D), 1/2 (3D)")
     ->check(CLI::Range(0., 1.));
   app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(CLI::PositiveNumber);

@@ -33,7 +33,7 @@ Untangling_options read_options(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   Untangling_options o;
   o.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta), -1.);
-  o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::NEWTON);
+  o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::AUTOMATIC);
   o.scaling = choose_parameter(get_parameter(np, internal_np::mesh_untangling_target_scaling), Target_scaling::AUTOMATIC);
   o.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), Mesh_untangling::default_number_of_iterations);
   o.max_seconds = choose_parameter(get_parameter(np, internal_np::maximum_running_time),

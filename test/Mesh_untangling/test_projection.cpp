@@ -3,7 +3,8 @@
 // negative, near-zero and zero determinants, repeated singular values, small
 // and large eps and theta.  Then the Newton solver's assembly (element
 // Hessians in vertex coordinates, lower triangle, coloured parallel loops)
-// against a plain sum of K^T P K, and its bits with 1 and 2 threads.
+// against a plain sum of K^T P K, and its bits with 1 and 2 threads; the
+// elements stored colour by colour for those loops.
 #include <CGAL/Mesh_untangling/internal/Newton_solver.h>
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
 
@@ -153,7 +154,7 @@ void check_projection(std::mt19937& random, int trials)
 /// its boundary fixed and its interior vertices moved at random by up to
 /// `amplitude` cells (tangling many elements).
 template <int d>
-Untangling_problem<d> perturbed_grid(int n, double amplitude, std::mt19937& random)
+Untangling_input<d> perturbed_grid_input(int n, double amplitude, std::mt19937& random)
 {
   std::uniform_real_distribution<double> offset(-amplitude / n, amplitude / n);
   Untangling_input<d> in;
@@ -189,7 +190,76 @@ Untangling_problem<d> perturbed_grid(int n, double amplitude, std::mt19937& rand
           }
         }
       }
-  return make_untangling_problem<d>(in);
+  return in;
+}
+
+template <int d>
+Untangling_problem<d> perturbed_grid(int n, double amplitude, std::mt19937& random)
+{
+  return make_untangling_problem<d>(perturbed_grid_input<d>(n, amplitude, random));
+}
+
+/// The elements stored colour by colour: no two of a colour share a free
+/// vertex, the mesh's elements come before the phantoms, and each element
+/// keeps its own gradient operator and weight.  The targets are the map
+/// itself (the last fifth of the elements playing phantoms), so every
+/// Jacobian must be the same multiple of the identity and every weight the
+/// element's share of the volume.
+template <int d>
+void check_colouring(std::mt19937& random, int n)
+{
+  Untangling_input<d> in = perturbed_grid_input<d>(n, 0.3, random);
+  for(const auto& e : in.elements) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
+    for(int i = 0; i <= d; ++i) t[i] = in.positions[e[i]];
+    in.targets.push_back(t);
+  }
+  in.phantom_elements = in.elements.size() / 5;
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, CGAL::Mesh_untangling::Target_scaling::AS_GIVEN);
+  const std::size_t m = P.elements.size();
+  const auto& start = P.colour_start;
+  CHECK(start.front() == 0 && start.back() == m);
+  CHECK(std::find(start.begin(), start.end(), P.mesh_elements) != start.end());
+  std::size_t races = 0;
+  for(std::size_t c = 0; c < P.number_of_colours(); ++c) {
+    CHECK(start[c] < start[c + 1]);
+    std::vector<char> seen(P.number_of_vertices, 0);
+    for(std::size_t k = start[c]; k < start[c + 1]; ++k)
+      for(std::size_t v : P.elements[k])
+        if(!P.is_fixed[v] && seen[v]++) ++races;
+  }
+  CHECK_MESSAGE(races == 0, races << " free vertices shared within a colour");
+
+  // each element once, as its input element (up to orientation), mesh ones first
+  std::vector<std::size_t> inputs(P.input_index);
+  std::sort(inputs.begin(), inputs.end());
+  CHECK(std::adjacent_find(inputs.begin(), inputs.end()) == inputs.end());
+  std::size_t misplaced = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    auto a = P.elements[k], b = in.elements[P.input_index[k]];
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    misplaced += a != b || (k < P.mesh_elements) != (P.input_index[k] < in.number_of_mesh_elements());
+  }
+  CHECK_MESSAGE(misplaced == 0, misplaced << " elements not their input element, or on the wrong side of the phantoms");
+  CHECK(m + P.constant_elements == in.elements.size());
+
+  double worst_jacobian = 0, worst_weight = 0, volume = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
+    for(int i = 0; i <= d; ++i) image[i] = P.point(P.elements[k][i]);
+    volume += std::abs(simplex_volume<d>(image));
+  }
+  for(std::size_t k = 0; k < m; ++k) {
+    const Eigen::Matrix<double, d, d> J = jacobian(P, P.x.data(), k);
+    worst_jacobian = std::max(worst_jacobian, (J - J(0, 0) * Eigen::Matrix<double, d, d>::Identity()).norm() / J(0, 0));
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
+    for(int i = 0; i <= d; ++i) image[i] = P.point(P.elements[k][i]);
+    worst_weight = std::max(worst_weight, std::abs(P.weights[k] - std::abs(simplex_volume<d>(image)) / volume) / P.weights[k]);
+  }
+  CHECK_MESSAGE(worst_jacobian < 1e-9, "d=" << d << ": a Jacobian is off the identity by " << worst_jacobian);
+  CHECK_MESSAGE(worst_weight < 1e-9, "d=" << d << ": a weight is off by " << worst_weight);
+  std::cout << "d=" << d << ": " << m << " elements in " << P.number_of_colours() << " colours\n";
 }
 
 /// The assembled Newton system against a plain sum over the elements of
@@ -271,6 +341,8 @@ int main()
   check_projection<3>(random, 4000);
   check_assembly<2>(random, 50);
   check_assembly<3>(random, 12);
+  check_colouring<2>(random, 20);
+  check_colouring<3>(random, 6);
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();
 }

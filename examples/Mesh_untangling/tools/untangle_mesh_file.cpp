@@ -106,12 +106,11 @@ void record_run(MU::internal::Untangling_input<d> frame, const MU::internal::Unt
   const MUI::Untangling_problem<d> P = MUI::make_untangling_problem<d>(frame, scaling);
   record.dimension = d;
   record.target_orientations = P.reference_orientation;
-  record.target_inverses.clear();
-  record.target_inverses.reserve(P.elements.size() * d * d);
-  for(const auto& G : P.gradient_operators) {
+  record.target_inverses.assign(P.elements.size() * d * d, 0.);
+  for(std::size_t k = 0; k < P.elements.size(); ++k) {
     // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
-    const Eigen::Matrix<double, d, d> T = G.template bottomRows<d>() / P.scale;
-    record.target_inverses.insert(record.target_inverses.end(), T.data(), T.data() + d * d);
+    const Eigen::Matrix<double, d, d> T = P.gradient_operators[k].template bottomRows<d>() / P.scale;
+    std::copy(T.data(), T.data() + d * d, record.target_inverses.begin() + d * d * P.input_index[k]);
   }
   record.phantom_simplices.clear();
   for(const auto& e : phantoms.elements) record.phantom_simplices.push_back(widened<d>(e));
@@ -132,7 +131,8 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   MU::internal::Untangling_options o;
   o.theta = options.theta;
   if(options.solver == "lbfgs") o.solver = MU::Solver::LBFGS;
-  else if(options.solver != "newton") throw Invalid_problem("unknown solver '" + options.solver + "' (newton, lbfgs)");
+  else if(options.solver == "newton") o.solver = MU::Solver::NEWTON;
+  else if(options.solver != "auto") throw Invalid_problem("unknown solver '" + options.solver + "' (auto, newton, lbfgs)");
   o.max_outer_iterations = options.max_iterations;
   o.max_seconds = options.max_seconds;
   o.continuation = options.continuation;

@@ -30,7 +30,7 @@ using CGAL::Mesh_untangling::Untangling_result;
 
 struct Run_options
 {
-  std::string solver = "newton";       // "newton" or "lbfgs"
+  std::string solver = "auto";         // "auto", "newton" or "lbfgs"
   double theta = -1;                   // < 0: the dimension's default
   std::size_t max_iterations = CGAL::Mesh_untangling::default_number_of_iterations;   // eps steps
   double max_seconds = std::numeric_limits<double>::infinity();

@@ -35,11 +35,25 @@ namespace Mesh_untangling {
 /// The inner solver that partially minimizes F(., eps) at each eps step.
 enum class Solver
 {
-  NEWTON,   ///< Newton steps on the positive part of the Hessian, sparse Cholesky (default)
-  LBFGS     ///< L-BFGS with a strong-Wolfe line search: the published reference scheme
+  /// `NEWTON`, unless its sparse Cholesky factorization would cost too much
+  /// (the default).  The symbolic analysis predicts the cost; above 1e9
+  /// flops and 4,000 flops per element (large regular grids: one
+  /// factorization then costs hundreds of energy passes, while L-BFGS
+  /// untangles such well-shaped meshes in a few hundred passes in all) the
+  /// run hands over to `LBFGS`, and `Untangling_result::solver` says so.
+  /// The prediction needs CHOLMOD; without it, always `NEWTON`.
+  AUTOMATIC,
+  /// Quasi-Newton steps preconditioned by the positive semi-definite part of
+  /// the Hessian, factorized by a sparse Cholesky; its own eps schedule.
+  NEWTON,
+  /// L-BFGS with a strong-Wolfe line search: the published reference scheme.
+  LBFGS
 };
 
-inline std::string to_string(Solver s) { return s == Solver::LBFGS ? "lbfgs" : "newton"; }
+inline std::string to_string(Solver s)
+{
+  return s == Solver::LBFGS ? "lbfgs" : s == Solver::NEWTON ? "newton" : "auto";
+}
 
 /// \ingroup PkgMeshUntanglingRef
 /// How target sizes relate to the map.
@@ -87,7 +101,7 @@ using Default_named_parameters = CGAL::parameters::Default_named_parameters;
 /// Weight of the size term against the shape term, in [0, 1] (default 1/128 in 2D, 1/2 in 3D).
 CGAL_MESH_UNTANGLING_PARAMETER(theta, mesh_untangling_theta_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
-/// The inner solver, a `CGAL::Mesh_untangling::Solver` (default `Solver::NEWTON`).
+/// The inner solver, a `CGAL::Mesh_untangling::Solver` (default `Solver::AUTOMATIC`).
 CGAL_MESH_UNTANGLING_PARAMETER(solver, mesh_untangling_solver_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// How target sizes relate to the map, a `CGAL::Mesh_untangling::Target_scaling`.

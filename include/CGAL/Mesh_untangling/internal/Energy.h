@@ -57,34 +57,50 @@ Determinant_summary<d> determinant_summary(const Untangling_problem<d>& P, const
   return s;
 }
 
+/// Sum of value(k) over the elements, colour by colour (see
+/// Untangling_problem::colour_start).  Within a colour, chunks of
+/// element_chunk_size run concurrently, so `value` may add into the entries
+/// of the free vertices of element k; the chunk sums are added in a fixed
+/// order.  Hence the same bits for any number of threads, and without TBB.
+template <int d, class Value>
+double coloured_sum(const Untangling_problem<d>& P, Value&& value)
+{
+  double sum = 0;
+  std::vector<double> partial;
+  for(std::size_t colour = 0; colour < P.number_of_colours(); ++colour) {
+    const std::size_t first = P.colour_start[colour], size = P.colour_start[colour + 1] - first;
+    partial.assign((size + element_chunk_size - 1) / element_chunk_size, 0.);
+    for_each_chunk(size, element_chunk_size, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+      double s = 0;
+      for(std::size_t k = first + begin; k < first + end; ++k) s += value(k);
+      partial[chunk] = s;
+    });
+    for(double p : partial) sum += p;
+  }
+  return sum;
+}
+
 /// F(X, eps) = sum_k w_k f_eps(J_k) and its gradient (zero on fixed vertices).
-/// Elements are evaluated in parallel chunks; F is summed in a fixed order
-/// (fixed_order_sum) and the gradient gathered serially in element order, so
-/// the result does not depend on the number of threads.
+/// Each element adds its gradient straight into its free vertices, colour by
+/// colour (coloured_sum): no per-element buffer, no serial gather.
 template <int d>
 double energy(const Untangling_problem<d>& P, const double* x, double eps, double theta, double* gradient = nullptr)
 {
   const Simplex_energy<d> f{theta, eps};
-  const std::size_t m = P.elements.size();
   if(gradient == nullptr)
-    return fixed_order_sum(m, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x, k)); });
+    return coloured_sum(P, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x, k)); });
 
-  using Element_gradient = Eigen::Matrix<double, d, d + 1>;
-  std::vector<Element_gradient> element_gradients(m);
-  const double F = fixed_order_sum(m, [&](std::size_t k) {
+  std::fill(gradient, gradient + d * P.number_of_vertices, 0.);
+  return coloured_sum(P, [&](std::size_t k) {
     Eigen::Matrix<double, d, d> dfdJ;
     const double value = f.value_and_gradient(jacobian(P, x, k), dfdJ);
-    element_gradients[k] = P.weights[k] * dfdJ * P.gradient_operators[k].transpose();
-    return P.weights[k] * value;
-  });
-  std::fill(gradient, gradient + d * P.number_of_vertices, 0.);
-  for(std::size_t k = 0; k < m; ++k)
+    const Eigen::Matrix<double, d, d + 1> element_gradient = P.weights[k] * dfdJ * P.gradient_operators[k].transpose();
     for(int i = 0; i <= d; ++i) {
       const std::size_t v = P.elements[k][i];
-      if(!P.is_fixed[v])
-        Eigen::Map<Eigen::Matrix<double, d, 1>>(gradient + d * v) += element_gradients[k].col(i);
+      if(!P.is_fixed[v]) Eigen::Map<Eigen::Matrix<double, d, 1>>(gradient + d * v) += element_gradient.col(i);
     }
-  return F;
+    return P.weights[k] * value;
+  });
 }
 
 } // namespace internal

@@ -36,9 +36,8 @@ namespace internal {
 /// d x d blocks in its lower triangle only (block rows >= block column; the
 /// diagonal blocks whole), which is all the Cholesky factorizations read.
 /// Every element knows where its blocks go, so assembly is a plain
-/// accumulation without searching.  The elements are also coloured so that
-/// no two of one colour share a free vertex: within a colour they can add
-/// their gradient entries and blocks concurrently without races.
+/// accumulation without searching, colour by colour (see
+/// Untangling_problem::colour_start) without races.
 template <int d>
 class Hessian_pattern
 {
@@ -83,17 +82,14 @@ public:
             matrix_.insert(d * i + r, d * j + c) = 0;
     matrix_.makeCompressed();
 
-    colour_elements(P);
-
-    // where each element's (a, b) block lands, in the order the colours list
-    // the elements (so that assembly reads this table sequentially)
+    // where each element's (a, b) block lands
     targets_.resize(m * (d + 1) * (d + 1));
-    for(std::size_t position = 0; position < m; ++position) {
-      const auto& e = P.elements[coloured_[position]];
+    for(std::size_t k = 0; k < m; ++k) {
+      const auto& e = P.elements[k];
       for(int a = 0; a <= d; ++a)
         for(int b = 0; b <= d; ++b) {
           const int i = free_index_[e[a]], j = free_index_[e[b]];
-          Target& t = targets_[(position * (d + 1) + a) * (d + 1) + b];
+          Target& t = targets_[(k * (d + 1) + a) * (d + 1) + b];
           if(j < 0 || i < j) continue;   // fixed vertex, or upper triangle
           const auto& r = rows[j];
           const int block = static_cast<int>(std::lower_bound(r.begin(), r.end(), i) - r.begin());
@@ -109,20 +105,13 @@ public:
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
-  std::size_t number_of_colours() const { return colour_start_.size() - 1; }
-  /// The elements of colour c, increasing: positions colour_start(c) to
-  /// colour_start(c + 1) - 1 of `coloured_element`.
-  std::size_t colour_start(std::size_t c) const { return colour_start_[c]; }
-  std::size_t coloured_element(std::size_t position) const { return coloured_[position]; }
-
-  /// Adds the d x d block B (d2F/dx_a dx_b) of the element at `position` in
-  /// colour order where it belongs in the lower triangle, as B^T in the
+  /// Adds the d x d block B (d2F/dx_a dx_b) of element k where it belongs in the lower triangle, as B^T in the
   /// (b, a) block when (a, b) is in the upper one; nothing for a fixed vertex.
   /// Called once per unordered pair {a, b}.
   template <class Block>
-  void add(std::size_t position, int a, int b, const Block& B)
+  void add(std::size_t k, int a, int b, const Block& B)
   {
-    const Target& t = targets_[(position * (d + 1) + a) * (d + 1) + b];
+    const Target& t = targets_[(k * (d + 1) + a) * (d + 1) + b];
     if(t.offset >= 0) {
       double* values = matrix_.valuePtr() + t.offset;
       for(int c = 0; c < d; ++c)
@@ -130,7 +119,7 @@ public:
           values[c * t.stride + r] += B(r, c);
       return;
     }
-    const Target& u = targets_[(position * (d + 1) + b) * (d + 1) + a];
+    const Target& u = targets_[(k * (d + 1) + b) * (d + 1) + a];
     if(u.offset >= 0) {   // B^T is the (b, a) block, in the lower triangle
       double* values = matrix_.valuePtr() + u.offset;
       for(int c = 0; c < d; ++c)
@@ -140,44 +129,6 @@ public:
   }
 
 private:
-  /// Greedy colouring in element order: the smallest colour no earlier
-  /// element sharing a free vertex has.
-  void colour_elements(const Untangling_problem<d>& P)
-  {
-    const std::size_t m = P.elements.size();
-    std::vector<std::size_t> star_start(number_of_free_ + 1, 0), star;   // free vertex -> elements
-    for(const auto& e : P.elements)
-      for(std::size_t v : e)
-        if(free_index_[v] >= 0) ++star_start[free_index_[v] + 1];
-    for(int v = 0; v < number_of_free_; ++v) star_start[v + 1] += star_start[v];
-    star.resize(star_start.back());
-    std::vector<std::size_t> fill(star_start.begin(), star_start.end() - 1);
-    for(std::size_t k = 0; k < m; ++k)
-      for(std::size_t v : P.elements[k])
-        if(free_index_[v] >= 0) star[fill[free_index_[v]]++] = k;
-
-    std::vector<int> colour(m, -1);
-    std::vector<std::size_t> taken;   // taken[c] == k + 1: colour c is used next to element k
-    int colours = 0;
-    for(std::size_t k = 0; k < m; ++k) {
-      for(std::size_t v : P.elements[k]) {
-        if(free_index_[v] < 0) continue;
-        for(std::size_t s = star_start[free_index_[v]]; s < star_start[free_index_[v] + 1]; ++s)
-          if(colour[star[s]] >= 0) taken[colour[star[s]]] = k + 1;
-      }
-      int c = 0;
-      while(c < colours && taken[c] == k + 1) ++c;
-      if(c == colours) { ++colours; taken.push_back(0); }
-      colour[k] = c;
-    }
-    colour_start_.assign(colours + 1, 0);
-    for(std::size_t k = 0; k < m; ++k) ++colour_start_[colour[k] + 1];
-    for(int c = 0; c < colours; ++c) colour_start_[c + 1] += colour_start_[c];
-    coloured_.resize(m);
-    std::vector<std::size_t> next(colour_start_.begin(), colour_start_.end() - 1);
-    for(std::size_t k = 0; k < m; ++k) coloured_[next[colour[k]]++] = k;
-  }
-
   struct Target
   {
     int offset = -1;   // of the block's (0, 0) entry in the values of matrix_; -1: not stored
@@ -188,8 +139,6 @@ private:
   int number_of_free_ = 0;
   std::vector<Target> targets_;     // per element (in colour order) and (a, b)
   Eigen::SparseMatrix<double> matrix_;
-  std::vector<std::size_t> colour_start_{0};   // per colour, into coloured_
-  std::vector<std::size_t> coloured_;          // elements sorted by colour, then index
 };
 
 /// Doublings of an accepted full step at most (see Newton_solver::minimize).
@@ -250,7 +199,18 @@ class Newton_solver
 #endif
 
 public:
-  explicit Newton_solver(const Untangling_problem<d>& P) : pattern_(P) {}
+  /// Builds the Hessian's pattern and its symbolic factorization, whose
+  /// cost prediction (`factorization_flops`) tells the caller whether this
+  /// solver pays on the problem.
+  explicit Newton_solver(const Untangling_problem<d>& P) : pattern_(P)
+  {
+    if(pattern_.number_of_free() > 0) analyze(pattern_.matrix());
+  }
+
+  /// Floating-point operations of one numeric factorization, as predicted
+  /// by the symbolic analysis; negative when the factorization gives no
+  /// prediction (Eigen's SimplicialLDLT, without CHOLMOD).
+  double factorization_flops() const { return factorization_flops_; }
 
   /// Minimizes F(., eps) from P.x (P.x receives the result) for at most
   /// `max_iterations` steps, until the model predicts a decrease of at most
@@ -395,8 +355,7 @@ public:
   /// add their gradient entries and Hessian blocks in place: no two share a
   /// free vertex, so no two write the same entry, and every entry receives
   /// its terms in colour order whatever the number of threads.  The energy
-  /// is summed over per-element values in a fixed order (fixed_order_sum).
-  /// Hence the same bits for any number of threads, and without TBB.
+  /// is summed as `energy` sums it (coloured_sum), to the same bits.
   double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g)
   {
     auto& H = pattern_.matrix();
@@ -404,13 +363,12 @@ public:
     g.setZero();
     element_energy_.resize(P.elements.size());
     const Simplex_energy<d> f{theta, eps};
-    for(std::size_t colour = 0; colour < pattern_.number_of_colours(); ++colour) {
-      const std::size_t first = pattern_.colour_start(colour), size = pattern_.colour_start(colour + 1) - first;
+    for(std::size_t colour = 0; colour < P.number_of_colours(); ++colour) {
+      const std::size_t first = P.colour_start[colour], size = P.colour_start[colour + 1] - first;
       // chunks of 256 elements (an element costs about a microsecond)
       for_each_chunk(size, element_chunk_size / 2, [&](std::size_t, std::size_t begin, std::size_t end) {
         typename Simplex_energy<d>::Vertex_hessian M;
-        for(std::size_t position = first + begin; position < first + end; ++position) {
-          const std::size_t k = pattern_.coloured_element(position);
+        for(std::size_t k = first + begin; k < first + end; ++k) {
           const auto J = jacobian(P, P.x.data(), k);
           const auto A = f.partials(J, true);
           const double w = P.weights[k];
@@ -425,15 +383,15 @@ public:
           Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
           for(int a = 0; a <= d; ++a) {
             for(int b = 0; b < a; ++b)
-              pattern_.add(position, a, b, M.template block<d, d>(d * a, d * b));
+              pattern_.add(k, a, b, M.template block<d, d>(d * a, d * b));
             Eigen::Matrix<double, d, d> diagonal = M.template block<d, d>(d * a, d * a);
             diagonal.template triangularView<Eigen::StrictlyUpper>() = diagonal.transpose();
-            pattern_.add(position, a, a, diagonal);
+            pattern_.add(k, a, a, diagonal);
           }
         }
       });
     }
-    return fixed_order_sum(P.elements.size(), [this](std::size_t k) { return element_energy_[k]; });
+    return coloured_sum(P, [this](std::size_t k) { return element_energy_[k]; });
   }
 
 private:
@@ -442,7 +400,6 @@ private:
   bool factorize()
   {
     auto& H = pattern_.matrix();
-    if(!factorization_) analyze(H);
     // A tiny diagonal shift keeps the system definite when nothing pins the
     // rigid motions (all vertices free); a failed factorization gets a larger
     // one.  The shift goes on H in place, and the diagonal is restored
@@ -486,12 +443,16 @@ private:
     factorization_->cholmod().final_ll = 1;
 #endif
     factorization_->analyzePattern(H);
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    factorization_flops_ = factorization_->cholmod().fl;
+#endif
   }
 
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
   std::vector<Eigen::Index> diagonal_position_;   // of each diagonal entry in the values of H
   std::vector<double> element_energy_;
+  double factorization_flops_ = -1;
 };
 
 } // namespace internal

@@ -31,7 +31,7 @@ namespace internal {
 struct Untangling_options
 {
   double theta = -1;                 // < 0: 1/128 in 2D, 1/2 in 3D
-  Solver solver = Solver::NEWTON;
+  Solver solver = Solver::AUTOMATIC;
   std::size_t max_outer_iterations = default_number_of_iterations;
   int max_inner_iterations = -1;     // < 0: solver default
   double max_seconds = std::numeric_limits<double>::infinity();
@@ -45,6 +45,20 @@ struct Untangling_options
 };
 
 constexpr int max_restarts = 10;           // shakes in stage 1
+
+/// Solver::AUTOMATIC hands over from Newton to L-BFGS when one numeric
+/// factorization of the Hessian would cost more than both (CHOLMOD's
+/// prediction).  On the data sets a factorization costs 600 to 1,100 flops
+/// per element (10 to 20 energy passes) and Newton's few steps win by an
+/// order of magnitude; on large regular grids it costs 13,600 per element
+/// (generated:square:300, 2.4e9 flops, 345 passes) to 600,000
+/// (generated:cube:30, 1e11 flops, 3,800 passes), while L-BFGS untangles
+/// such well-shaped meshes in a few hundred passes in all (square:300: 100 s
+/// with Newton, 1.5 s with L-BFGS).  Small but hard volume meshes (the
+/// rotated cavities at size 0.3: 5.8e8 flops, 40,000 per element) need
+/// Newton and stay below the absolute bound.
+constexpr double hand_over_above_flops = 1e9;
+constexpr double hand_over_above_flops_per_element = 4000;
 
 template <int d>
 double default_theta() { return d == 2 ? 1. / 128 : 1. / 2; }
@@ -96,15 +110,17 @@ class Eps_loop
 {
 public:
   Eps_loop(const Untangling_options& options, double theta, Untangling_result& result)
-    : options_(options), theta_(theta), result_(result), start_(std::chrono::steady_clock::now()) {}
+    : options_(options), theta_(theta), result_(result), start_(std::chrono::steady_clock::now()),
+      solver_(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON) {}
 
   double seconds() const
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   bool out_of_time() const { return seconds() > options_.max_seconds; }
 
   /// Partial minimizations of F(., eps) from P.x until the energy settles
-  /// with every element positive.  With `patience` > 0, also gives up when
-  /// the count of non-positive elements has not gone down for that many steps.
+  /// with every element positive.  With `give_up_on_stall`, also gives up
+  /// when the count of non-positive elements has not gone down for
+  /// stall_patience() steps.
   ///
   /// L-BFGS follows the published scheme exactly.  Newton follows
   /// Adaptive_epsilon, and each of its inner solves runs until the quadratic
@@ -112,11 +128,11 @@ public:
   /// where eps is tiny and a converged solve is the end: free boundaries have
   /// soft modes, rigid motions and scaling, that a looser test leaves
   /// visibly short of the minimum) or a few steps.
-  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, std::size_t patience = 0)
+  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, bool give_up_on_stall)
   {
     Eps_loop_outcome out;
-    std::unique_ptr<Newton_solver<d>> newton;
-    if(options_.solver == Solver::NEWTON) newton = std::make_unique<Newton_solver<d>>(P);
+    Newton_solver<d>* newton = newton_solver(P);
+    const std::size_t patience = give_up_on_stall ? stall_patience() : 0;
     Adaptive_epsilon adaptive;
     auto summary = determinant_summary(P, P.x.data());
     double eps = newton && summary.min_det > 0 ? tiny_epsilon : initial_epsilon(summary.min_det);
@@ -156,19 +172,41 @@ public:
     return out;
   }
 
+private:
   /// Steps without fewer non-positive elements before a stage gives up:
   /// Newton has settled each eps when L-BFGS has barely started, so it
   /// needs less patience to see a stall.
-  std::size_t stall_patience() const { return options_.solver == Solver::NEWTON ? 10 : 40; }
+  std::size_t stall_patience() const { return solver_ == Solver::NEWTON ? 10 : 40; }
 
-private:
+  /// The Newton solver for P (its symbolic factorization is reused by every
+  /// run on the same problem), or none when the solver is L-BFGS, chosen or
+  /// handed over to (Solver::AUTOMATIC) because a factorization would cost
+  /// too much.
+  Newton_solver<d>* newton_solver(const Untangling_problem<d>& P)
+  {
+    if(solver_ != Solver::NEWTON) return nullptr;
+    if(newton_problem_ != &P) {
+      newton_ = std::make_unique<Newton_solver<d>>(P);
+      newton_problem_ = &P;
+      const double flops = newton_->factorization_flops();
+      if(options_.solver == Solver::AUTOMATIC && flops > hand_over_above_flops &&
+         flops > hand_over_above_flops_per_element * P.elements.size()) {
+        newton_.reset();
+        solver_ = Solver::LBFGS;
+        result_.solver = to_string(Solver::LBFGS) + " (a Newton factorization would cost " +
+                         std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element)";
+      }
+    }
+    return newton_.get();
+  }
+
   /// Inner iterations per eps step: the caller's, else the published
   /// limits for L-BFGS; Newton gets many more once the map is valid, where
   /// its inner solve is the whole remaining work.
   int inner_iterations(bool valid) const
   {
     if(options_.max_inner_iterations >= 0) return options_.max_inner_iterations;
-    if(options_.solver == Solver::LBFGS) return published_inner_iterations<d>();
+    if(solver_ == Solver::LBFGS) return published_inner_iterations<d>();
     return valid ? 50 : 6;
   }
 
@@ -177,6 +215,9 @@ private:
   Untangling_result& result_;
   const std::chrono::steady_clock::time_point start_;
   std::size_t steps_ = 0;
+  Solver solver_;
+  std::unique_ptr<Newton_solver<d>> newton_;
+  const Untangling_problem<d>* newton_problem_ = nullptr;
 };
 
 /// The same problem with a regular target of the same orientation for
@@ -255,7 +296,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
                                     Phantom_elements<d>* phantoms_used = nullptr)
 {
   Untangling_result result;
-  result.solver = to_string(options.solver);
+  result.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
   result.number_of_vertices = in.positions.size();
   result.number_of_elements = in.elements.size();
   const bool targets_given = !in.targets.empty();
@@ -283,22 +324,22 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
 
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
-  Eps_loop_outcome outcome = loop.run(P, 0, loop.stall_patience());
+  Eps_loop_outcome outcome = loop.run(P, 0, true);
   if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
-    if(targets_given) outcome = loop.run(R, 1, loop.stall_patience());
+    if(targets_given) outcome = loop.run(R, 1, true);
     // Still stuck: typically free vertices collapsed onto each other, a
     // symmetric configuration the gradient cannot break.  Shake the vertices
     // of the non-positive elements and go on.
     std::mt19937 random(1);
     for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
       shake_non_positive_elements(R, random);
-      outcome = loop.run(R, 1, loop.stall_patience());
+      outcome = loop.run(R, 1, true);
     }
     const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
     P.x = R.x;
     if(targets_given && untangled && !outcome.stopped && !loop.out_of_time()) {
-      outcome = loop.run(P, 2);
+      outcome = loop.run(P, 2, false);
       if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
     }
   }

@@ -15,6 +15,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +49,42 @@ struct Untangling_input
 };
 
 
+/// Greedy colouring of elements[first, last) in element order: each takes
+/// the smallest colour that no earlier element sharing a free vertex with it
+/// has.  Returns the colour of each element of the range, and the number of colours.
+template <std::size_t vertices_per_element>
+std::pair<std::vector<std::size_t>, std::size_t>
+colour_elements(const std::vector<std::array<std::size_t, vertices_per_element>>& elements, std::size_t first,
+                std::size_t last, const std::vector<char>& is_fixed)
+{
+  const std::size_t n = is_fixed.size();
+  std::vector<std::size_t> star_start(n + 1, 0), star;   // free vertex -> its elements, increasing
+  for(std::size_t k = first; k < last; ++k)
+    for(std::size_t v : elements[k])
+      if(!is_fixed[v]) ++star_start[v + 1];
+  for(std::size_t v = 0; v < n; ++v) star_start[v + 1] += star_start[v];
+  star.resize(star_start.back());
+  std::vector<std::size_t> fill(star_start.begin(), star_start.end() - 1);
+  for(std::size_t k = first; k < last; ++k)
+    for(std::size_t v : elements[k])
+      if(!is_fixed[v]) star[fill[v]++] = k;
+
+  std::vector<std::size_t> colour(last - first, 0);
+  std::vector<std::size_t> taken;   // taken[c] == k + 1: colour c is used next to element k
+  std::size_t colours = 0;
+  for(std::size_t k = first; k < last; ++k) {
+    for(std::size_t v : elements[k]) {
+      if(is_fixed[v]) continue;
+      for(std::size_t s = star_start[v]; s < star_start[v + 1] && star[s] < k; ++s) taken[colour[star[s] - first]] = k + 1;
+    }
+    std::size_t c = 0;
+    while(c < colours && taken[c] == k + 1) ++c;
+    if(c == colours) { ++colours; taken.push_back(0); }
+    colour[k - first] = c;
+  }
+  return {colour, colours};
+}
+
 /// Flat arrays the solvers work on.  Coordinates are normalized (centred,
 /// unit bounding box) so that tolerances are scale free; elements whose
 /// target is negatively oriented have two vertices swapped so that every
@@ -65,7 +103,16 @@ struct Untangling_problem
   std::vector<Simplex> elements;
   std::vector<Gradient_operator> gradient_operators;
   std::vector<double> weights;                      // target volumes, summing to 1
+  std::vector<std::size_t> input_index;             // of each element in the Untangling_input
   std::size_t mesh_elements = 0;                    // elements[0, mesh_elements) are the mesh's, the rest phantoms
+  // Elements are stored colour by colour: no two elements of
+  // [colour_start[c], colour_start[c + 1]) share a free vertex, so they may
+  // add into their vertices' entries (gradient, Hessian blocks) concurrently
+  // without races, and every entry receives its terms in the same order
+  // whatever the number of threads.  The mesh's colours come first.
+  std::vector<std::size_t> colour_start{0};
+
+  std::size_t number_of_colours() const { return colour_start.size() - 1; }
 
   // bookkeeping to report on the user's elements
   std::vector<int> reference_orientation;           // per input element: orientation of its target
@@ -237,6 +284,38 @@ void validate_input(const Untangling_input<d>& in)
     }
 }
 
+/// Stores the mesh's elements, then the phantoms, colour by colour (see
+/// Untangling_problem::colour_start), each colour in element order: the
+/// element loops then read every array sequentially.
+template <int d>
+void sort_elements_by_colour(Untangling_problem<d>& P)
+{
+  const std::size_t m = P.elements.size();
+  std::vector<std::size_t> order;   // new position -> old index
+  order.reserve(m);
+  for(auto [first, last] : {std::pair(std::size_t(0), P.mesh_elements), std::pair(P.mesh_elements, m)}) {
+    const auto [colour, colours] = colour_elements(P.elements, first, last, P.is_fixed);
+    std::vector<std::size_t> start(colours + 1, 0);
+    for(std::size_t c : colour) ++start[c + 1];
+    for(std::size_t c = 0; c < colours; ++c) start[c + 1] += start[c];
+    std::vector<std::size_t> part(last - first);
+    for(std::size_t k = first; k < last; ++k) part[start[colour[k - first]]++] = k;
+    // start[c] is now where colour c ends
+    for(std::size_t c = 0; c < colours; ++c) P.colour_start.push_back(first + start[c]);
+    order.insert(order.end(), part.begin(), part.end());
+  }
+  auto permute = [&order](auto& values) {
+    std::remove_reference_t<decltype(values)> sorted;
+    sorted.reserve(values.size());
+    for(std::size_t k : order) sorted.push_back(values[k]);
+    values.swap(sorted);
+  };
+  permute(P.elements);
+  permute(P.gradient_operators);
+  permute(P.weights);
+  permute(P.input_index);
+}
+
 /// Checks the input and builds the normalized problem; throws
 /// std::invalid_argument with a message naming the element or vertex.
 template <int d>
@@ -332,11 +411,13 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     G.row(0) = -Einv.colwise().sum();
     if(k < mesh_m) ++P.mesh_elements;
     P.elements.push_back(e);
+    P.input_index.push_back(k);
     P.gradient_operators.push_back(G);
     P.weights.push_back(E.determinant() / (d == 2 ? 2. : 6.));
     weight_sum += P.weights.back();
   }
   for(double& w : P.weights) w /= weight_sum;
+  sort_elements_by_colour(P);
   return P;
 }
 

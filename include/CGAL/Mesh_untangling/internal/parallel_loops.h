@@ -43,23 +43,6 @@ void for_each_chunk(std::size_t n, std::size_t size, Body&& body)
   for(std::size_t c = 0; c < chunks; ++c) body(c, c * size, std::min(n, (c + 1) * size));
 }
 
-/// Sum of value(k) over [0, n) in a fixed order: left to right within each
-/// chunk of element_chunk_size, then the chunk sums left to right.  Chunks
-/// are evaluated concurrently; the result does not depend on the threads.
-template <class Value>
-double fixed_order_sum(std::size_t n, Value&& value)
-{
-  std::vector<double> partial((n + element_chunk_size - 1) / element_chunk_size, 0.);
-  for_each_chunk(n, element_chunk_size, [&](std::size_t c, std::size_t begin, std::size_t end) {
-    double sum = 0;
-    for(std::size_t k = begin; k < end; ++k) sum += value(k);
-    partial[c] = sum;
-  });
-  double sum = 0;
-  for(double p : partial) sum += p;
-  return sum;
-}
-
 } // namespace internal
 } // namespace Mesh_untangling
 } // namespace CGAL
