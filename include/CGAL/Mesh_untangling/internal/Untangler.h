@@ -186,11 +186,12 @@ private:
   {
     if(solver_ != Solver::NEWTON) return nullptr;
     if(newton_problem_ != &P) {
-      newton_ = std::make_unique<Newton_solver<d>>(P);
+      const bool automatic = options_.solver == Solver::AUTOMATIC;
+      const double limit = std::max(hand_over_above_flops, hand_over_above_flops_per_element * P.elements.size());
+      newton_ = std::make_unique<Newton_solver<d>>(P, automatic ? limit : std::numeric_limits<double>::infinity());
       newton_problem_ = &P;
       const double flops = newton_->factorization_flops();
-      if(options_.solver == Solver::AUTOMATIC && flops > hand_over_above_flops &&
-         flops > hand_over_above_flops_per_element * P.elements.size()) {
+      if(automatic && flops > limit) {
         newton_.reset();
         solver_ = Solver::LBFGS;
         result_.solver = to_string(Solver::LBFGS) + " (a Newton factorization would cost " +
