@@ -213,6 +213,17 @@ check "--solver lbfgs: small square was tangled" json_positive lbfgs.json invert
 check "--solver lbfgs: inverted_after 0" json_is lbfgs.json inverted_after 0
 check "--solver lbfgs: handles unchanged" [ "$(handle_rows small.input)" = "$(handle_rows lbfgs.input)" ]
 
+# --solver newton and auto; auto hands over to L-BFGS on a grid whose
+# Newton factorization would cost too much (1.6e9 flops, 66,000 per tet).
+run newton small.input -o newton.input --solver newton --report newton.json -q
+check "--solver newton: exit 0" rc_is newton 0
+check "--solver newton: reported" json_is newton.json solver '"newton"'
+"$MAKE" cube 16 1.2 1 cube16.input > /dev/null || { echo "FAIL: make_tangled_mesh cube 16" >&2; exit 1; }
+run auto16 cube16.input -o auto16.input --solver auto --report auto16.json -q
+check "--solver auto, cube 16: exit 0" rc_is auto16 0
+check "--solver auto, cube 16: inverted_after 0" json_is auto16.json inverted_after 0
+check "--solver auto, cube 16: handed over to lbfgs" grep -q '"solver": *"lbfgs (a Newton factorization would cost' auto16.json
+
 # --svg and --svg-input: pictures of a 2D map, written whole. The input
 # picture shows the tangled triangles in red, the result none; the report
 # carries the windings and the boundary self-intersections before and after.
