@@ -45,7 +45,7 @@ class Hessian_pattern
 public:
   explicit Hessian_pattern(const Untangling_problem<d>& P)
   {
-    const std::size_t n = P.number_of_vertices, m = P.elements.size();
+    const std::size_t n = P.number_of_vertices;
     free_index_.assign(n, -1);
     for(std::size_t v = 0; v < n; ++v)
       if(!P.is_fixed[v]) free_index_[v] = number_of_free_++;
@@ -83,20 +83,35 @@ public:
             matrix_.insert(d * i + r, d * j + c) = 0;
     matrix_.makeCompressed();
 
-    // where each element's (a, b) block lands
-    targets_.resize(m * (d + 1) * (d + 1));
-    for(std::size_t k = 0; k < m; ++k) {
+  }
+
+  /// Where each element's (a, b) block lands, read off the matrix's
+  /// structure.  Done on the first assembly only: a caller that only wants
+  /// the cost prediction of the analysis (Solver::AUTOMATIC handing over)
+  /// never pays for this table, (d + 1)^2 entries per element.
+  void locate_blocks(const Untangling_problem<d>& P)
+  {
+    if(!targets_.empty() || P.elements.empty()) return;
+    const auto* outer = matrix_.outerIndexPtr();
+    const auto* inner = matrix_.innerIndexPtr();
+    targets_.resize(P.elements.size() * (d + 1) * (d + 1));
+    for(std::size_t k = 0; k < P.elements.size(); ++k) {
       const auto& e = P.elements[k];
       for(int a = 0; a <= d; ++a)
         for(int b = 0; b <= d; ++b) {
           const int i = free_index_[e[a]], j = free_index_[e[b]];
-          Target& t = targets_[(k * (d + 1) + a) * (d + 1) + b];
           if(j < 0 || i < j) continue;   // fixed vertex, or upper triangle
-          const auto& r = rows[j];
-          const int block = static_cast<int>(std::lower_bound(r.begin(), r.end(), i) - r.begin());
-          const int blocks_in_column = column_start[j + 1] - column_start[j];
-          t.offset = d * d * column_start[j] + d * block;
-          t.stride = d * blocks_in_column;
+          // the first scalar column of block column j lists its block rows, d entries each
+          const auto first = outer[d * j], blocks = (outer[d * j + 1] - first) / d;
+          Eigen::Index low = 0, high = blocks;   // binary search for block row i
+          while(low < high) {
+            const Eigen::Index middle = (low + high) / 2;
+            if(inner[first + d * middle] < d * i) low = middle + 1;
+            else high = middle;
+          }
+          Target& t = targets_[(k * (d + 1) + a) * (d + 1) + b];
+          t.offset = static_cast<int>(first + d * low);
+          t.stride = static_cast<int>(d * blocks);
         }
     }
   }
@@ -106,9 +121,10 @@ public:
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
-  /// Adds the d x d block B (d2F/dx_a dx_b) of element k where it belongs in the lower triangle, as B^T in the
-  /// (b, a) block when (a, b) is in the upper one; nothing for a fixed vertex.
-  /// Called once per unordered pair {a, b}.
+  /// Adds the d x d block B (d2F/dx_a dx_b) of element k where it belongs
+  /// in the lower triangle, as B^T in the (b, a) block when (a, b) is in the
+  /// upper one; nothing for a fixed vertex.  Called once per unordered pair
+  /// {a, b}, after locate_blocks.
   template <class Block>
   void add(std::size_t k, int a, int b, const Block& B)
   {
@@ -363,6 +379,7 @@ public:
   /// is summed as `energy` sums it (coloured_sum), to the same bits.
   double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g)
   {
+    pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
     std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
     g.setZero();
