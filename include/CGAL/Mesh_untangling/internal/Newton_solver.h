@@ -375,45 +375,37 @@ public:
   /// Colour by colour, the elements of one colour run in parallel chunks and
   /// add their gradient entries and Hessian blocks in place: no two share a
   /// free vertex, so no two write the same entry, and every entry receives
-  /// its terms in colour order whatever the number of threads.  The energy
-  /// is summed as `energy` sums it (coloured_sum), to the same bits.
+  /// its terms in colour order whatever the number of threads; the energy is
+  /// summed as `energy` sums it.  Both through coloured_sum.
   double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g)
   {
     pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
     std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
     g.setZero();
-    element_energy_.resize(P.elements.size());
     const Simplex_energy<d> f{theta, eps};
-    for(std::size_t colour = 0; colour < P.number_of_colours(); ++colour) {
-      const std::size_t first = P.colour_start[colour], size = P.colour_start[colour + 1] - first;
-      // chunks of 256 elements (an element costs about a microsecond)
-      for_each_chunk(size, element_chunk_size / 2, [&](std::size_t, std::size_t begin, std::size_t end) {
-        typename Simplex_energy<d>::Vertex_hessian M;
-        for(std::size_t k = first + begin; k < first + end; ++k) {
-          const auto J = jacobian(P, P.x.data(), k);
-          const auto A = f.partials(J, true);
-          const double w = P.weights[k];
-          const auto& G = P.gradient_operators[k];
-          element_energy_[k] = w * A.f;
-          const Eigen::Matrix<double, d, d> dfdJ = 2 * A.s * J + A.D * A.C;
-          const Eigen::Matrix<double, d, d + 1> ge = w * dfdJ * G.transpose();
-          for(int a = 0; a <= d; ++a) {
-            const int fa = pattern_.free_index(P.elements[k][a]);
-            if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
-          }
-          Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
-          for(int a = 0; a <= d; ++a) {
-            for(int b = 0; b < a; ++b)
-              pattern_.add(k, a, b, M.template block<d, d>(d * a, d * b));
-            Eigen::Matrix<double, d, d> diagonal = M.template block<d, d>(d * a, d * a);
-            diagonal.template triangularView<Eigen::StrictlyUpper>() = diagonal.transpose();
-            pattern_.add(k, a, a, diagonal);
-          }
-        }
-      });
-    }
-    return coloured_sum(P, [this](std::size_t k) { return element_energy_[k]; });
+    return coloured_sum(P, [&](std::size_t k) {
+      const auto J = jacobian(P, P.x.data(), k);
+      const auto A = f.partials(J, true);
+      const double w = P.weights[k];
+      const auto& G = P.gradient_operators[k];
+      const Eigen::Matrix<double, d, d> dfdJ = 2 * A.s * J + A.D * A.C;
+      const Eigen::Matrix<double, d, d + 1> ge = w * dfdJ * G.transpose();
+      for(int a = 0; a <= d; ++a) {
+        const int fa = pattern_.free_index(P.elements[k][a]);
+        if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
+      }
+      typename Simplex_energy<d>::Vertex_hessian M;
+      Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
+      for(int a = 0; a <= d; ++a) {
+        for(int b = 0; b < a; ++b)
+          pattern_.add(k, a, b, M.template block<d, d>(d * a, d * b));
+        Eigen::Matrix<double, d, d> diagonal = M.template block<d, d>(d * a, d * a);
+        diagonal.template triangularView<Eigen::StrictlyUpper>() = diagonal.transpose();
+        pattern_.add(k, a, a, diagonal);
+      }
+      return w * A.f;
+    });
   }
 
 private:
@@ -482,7 +474,6 @@ private:
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
   std::vector<Eigen::Index> diagonal_position_;   // of each diagonal entry in the values of H
-  std::vector<double> element_energy_;
   double factorization_flops_ = -1;
 };
 
