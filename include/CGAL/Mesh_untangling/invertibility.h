@@ -8,6 +8,7 @@
 /// elements and k-coverings of vertex stars and edge fans.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 #include <CGAL/assertions.h>
 #include <CGAL/use.h>
 
@@ -120,9 +121,11 @@ std::vector<signed char> relative_signs(const std::vector<std::array<double, D>>
 {
   check_soup_preconditions(positions.size(), simplices, reference_orientation);
   std::vector<signed char> signs(simplices.size());
-  for(std::size_t i = 0; i < simplices.size(); ++i)
-    signs[i] = static_cast<signed char>(exact_orientation(positions, simplices[i]) *
-                                        reference_sign(reference_orientation, i));
+  for_each_chunk(simplices.size(), element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
+      signs[i] = static_cast<signed char>(exact_orientation(positions, simplices[i]) *
+                                          reference_sign(reference_orientation, i));
+  });
   return signs;
 }
 
@@ -137,34 +140,6 @@ std::vector<char> elements_with_only_fixed_vertices(const std::vector<std::array
     only_fixed[i] = std::all_of(simplices[i].begin(), simplices[i].end(),
                                 [&](std::size_t v) { return bool(is_fixed[v]); });
   return only_fixed;
-}
-
-/// Vertex -> incident elements, in compressed rows, so that every star is
-/// visited in O(size of the star) without a hash map.
-struct Vertex_stars
-{
-  std::vector<std::size_t> offsets, elements;
-  std::size_t begin(std::size_t v) const { return offsets[v]; }
-  std::size_t end(std::size_t v) const { return offsets[v + 1]; }
-};
-
-template <std::size_t N>
-Vertex_stars build_vertex_stars(std::size_t number_of_vertices,
-                                const std::vector<std::array<std::size_t, N>>& simplices)
-{
-  Vertex_stars stars;
-  stars.offsets.assign(number_of_vertices + 1, 0);
-  for(const auto& s : simplices)
-    for(std::size_t v : s)
-      ++stars.offsets[v + 1];
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
-    stars.offsets[v + 1] += stars.offsets[v];
-  stars.elements.resize(stars.offsets.back());
-  std::vector<std::size_t> fill(stars.offsets.begin(), stars.offsets.end() - 1);
-  for(std::size_t i = 0; i < simplices.size(); ++i)
-    for(std::size_t v : simplices[i])
-      stars.elements[fill[v]++] = i;
-  return stars;
 }
 
 /// Completes the positions (i, j) of a simplex of size N into an even
@@ -444,19 +419,82 @@ public:
   }
 };
 
-/// Calls `visit(v, type, signed_angle_sum, star_elements)` for every non-isolated 2D vertex.
+/// The part of the report that element orientations decide, stars left unchecked.
+inline Invertibility_report element_report(const std::vector<signed char>& signs, const std::vector<char>& only_fixed)
+{
+  Invertibility_report report;
+  report.number_of_elements = signs.size();
+  Defect_recorder(report, only_fixed).elements(signs);
+  return report;
+}
+
+/// Inverted elements and input defects only: what a check before untangling
+/// needs, at the cost of one orientation test per element.
+template <std::size_t D>
+Invertibility_report check_elements(const std::vector<std::array<double, D>>& positions,
+                                    const std::vector<std::array<std::size_t, D + 1>>& simplices,
+                                    const std::vector<int>& reference_orientation,
+                                    const std::vector<bool>& is_fixed)
+{
+  return element_report(relative_signs<D>(positions, simplices, reference_orientation),
+                        elements_with_only_fixed_vertices(simplices, is_fixed));
+}
+
+template <class T>
+void append(std::vector<T>& to, const std::vector<T>& from)
+{ to.insert(to.end(), from.begin(), from.end()); }
+
+/// Adds to `report` what a check found on one chunk of vertices.
+inline void add_part(Invertibility_report& report, const Invertibility_report& part)
+{
+  report.inverted_elements += part.inverted_elements;
+  report.overwound_interior_vertices += part.overwound_interior_vertices;
+  report.overwound_boundary_vertices += part.overwound_boundary_vertices;
+  report.overwound_interior_edges += part.overwound_interior_edges;
+  report.overwound_boundary_edges += part.overwound_boundary_edges;
+  report.input_defects += part.input_defects;
+  report.non_manifold += part.non_manifold;
+  append(report.inverted_element_ids, part.inverted_element_ids);
+  append(report.overwound_vertex_ids, part.overwound_vertex_ids);
+  append(report.overwound_edges, part.overwound_edges);
+  append(report.input_defect_element_ids, part.input_defect_element_ids);
+  append(report.input_defect_vertex_ids, part.input_defect_vertex_ids);
+  append(report.input_defect_edges, part.input_defect_edges);
+  report.min_covering = (std::min)(report.min_covering, part.min_covering);
+  report.max_covering = (std::max)(report.max_covering, part.max_covering);
+  report.max_boundary_covering = (std::max)(report.max_boundary_covering, part.max_boundary_covering);
+}
+
+/// Runs `check(first, last, part)` on the chunks of vertices, concurrently
+/// when TBB is linked, each chunk into a part of its own, then adds the parts
+/// to `report` in chunk order: the same report, ids in the same order, for
+/// any number of threads.
+template <class Check>
+void check_vertex_chunks(std::size_t number_of_vertices, Invertibility_report& report, Check&& check)
+{
+  std::vector<Invertibility_report> parts(number_of_vertex_chunks(number_of_vertices));
+  for_each_vertex_chunk(number_of_vertices, [&](std::size_t chunk, std::size_t first, std::size_t last) {
+    check(first, last, parts[chunk]);
+  });
+  for(const Invertibility_report& part : parts)
+    add_part(report, part);
+}
+
+/// Calls `visit(v, type, signed_angle_sum, star_elements)` for every
+/// non-isolated 2D vertex v in [first, last).
 template <class Visitor>
 void visit_vertex_stars_2(const std::vector<Vec2>& positions,
                           const std::vector<std::array<std::size_t, 3>>& triangles,
                           const std::vector<int>& reference_orientation,
                           const std::vector<signed char>& signs,
-                          Visitor visit)
+                          const Vertex_stars& stars,
+                          std::size_t first, std::size_t last,
+                          Visitor&& visit)
 {
-  const Vertex_stars stars = build_vertex_stars(positions.size(), triangles);
   Chain_classifier classify;
   std::vector<Link_edge> link;
   std::vector<std::size_t> star;
-  for(std::size_t v = 0; v < positions.size(); ++v) {
+  for(std::size_t v = first; v < last; ++v) {
     if(stars.begin(v) == stars.end(v))
       continue;
     link.clear();
@@ -475,19 +513,21 @@ void visit_vertex_stars_2(const std::vector<Vec2>& positions,
   }
 }
 
-/// Calls `visit(v, type, signed_solid_angle_sum, star_elements)` for every non-isolated 3D vertex.
+/// Calls `visit(v, type, signed_solid_angle_sum, star_elements)` for every
+/// non-isolated 3D vertex v in [first, last).
 template <class Visitor>
 void visit_vertex_stars_3(const std::vector<Vec3>& positions,
                           const std::vector<std::array<std::size_t, 4>>& tets,
                           const std::vector<int>& reference_orientation,
                           const std::vector<signed char>& signs,
                           const Vertex_stars& stars,
-                          Visitor visit)
+                          std::size_t first, std::size_t last,
+                          Visitor&& visit)
 {
   Surface_classifier classify;
   std::vector<std::array<std::size_t, 3>> link;
   std::vector<std::size_t> star;
-  for(std::size_t v = 0; v < positions.size(); ++v) {
+  for(std::size_t v = first; v < last; ++v) {
     if(stars.begin(v) == stars.end(v))
       continue;
     link.clear();
@@ -516,21 +556,22 @@ struct Fan_entry
 };
 
 /// Calls `visit(a, b, type, signed_dihedral_sum, fan_elements)` for every 3D
-/// edge (a < b).  Each edge is gathered from the star of its smaller vertex,
-/// so no global edge table is needed.
+/// edge (a < b) with a in [first, last).  Each edge is gathered from the star
+/// of its smaller vertex, so no global edge table is needed.
 template <class Visitor>
 void visit_edge_fans_3(const std::vector<Vec3>& positions,
                        const std::vector<std::array<std::size_t, 4>>& tets,
                        const std::vector<int>& reference_orientation,
                        const std::vector<signed char>& signs,
                        const Vertex_stars& stars,
-                       Visitor visit)
+                       std::size_t first, std::size_t last,
+                       Visitor&& visit)
 {
   Chain_classifier classify;
   std::vector<Fan_entry> entries;
   std::vector<Link_edge> link;
   std::vector<std::size_t> fan;
-  for(std::size_t a = 0; a < positions.size(); ++a) {
+  for(std::size_t a = first; a < last; ++a) {
     entries.clear();
     for(std::size_t s = stars.begin(a); s < stars.end(a); ++s) {
       const std::size_t e = stars.elements[s];
@@ -585,8 +626,11 @@ std::vector<int> simplex_orientations(const std::vector<std::array<double, D>>& 
                                       const std::vector<std::array<std::size_t, D + 1>>& simplices)
 {
   std::vector<int> orientations(simplices.size());
-  for(std::size_t i = 0; i < simplices.size(); ++i)
-    orientations[i] = simplex_orientation<D>(positions, simplices[i]);
+  internal::for_each_chunk(simplices.size(), internal::element_chunk_size,
+                           [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
+      orientations[i] = simplex_orientation<D>(positions, simplices[i]);
+  });
   return orientations;
 }
 
@@ -599,12 +643,8 @@ std::size_t number_of_inverted_elements(const std::vector<std::array<double, D>>
                                         const std::vector<int>& reference_orientation = {})
 {
   static_assert(D == 2 || D == 3, "Mesh_untangling handles triangles in 2D and tetrahedra in 3D");
-  internal::check_soup_preconditions(positions.size(), simplices, reference_orientation);
-  std::size_t inverted = 0;
-  for(std::size_t i = 0; i < simplices.size(); ++i)
-    inverted += internal::exact_orientation(positions, simplices[i]) *
-                    internal::reference_sign(reference_orientation, i) <= 0;
-  return inverted;
+  const auto signs = internal::relative_signs<D>(positions, simplices, reference_orientation);
+  return std::size_t(std::count_if(signs.begin(), signs.end(), [](signed char s) { return s <= 0; }));
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -616,7 +656,9 @@ std::size_t number_of_inverted_elements(const std::vector<std::array<double, D>>
 /// wind once; a boundary star must not turn more than once.  Stars that are
 /// not manifold are counted in `non_manifold` and skipped.  Defects whose
 /// elements have only fixed vertices are reported as input defects.
-/// Runs in O(n log d) for n simplices and largest star size d.
+/// Runs in O(n log d) for n simplices and largest star size d; vertices are
+/// checked in fixed chunks, concurrently when TBB is linked, and the report,
+/// lists included, is the same for any number of threads.
 ///
 /// \param reference_orientation +1 or -1 per simplex, the orientation of its
 ///        target (see `simplex_orientations()`); empty means all +1
@@ -629,32 +671,36 @@ Invertibility_report check_local_invertibility(const std::vector<std::array<doub
 {
   static_assert(D == 2 || D == 3, "Mesh_untangling handles triangles in 2D and tetrahedra in 3D");
   CGAL_precondition(is_fixed.empty() || is_fixed.size() == positions.size());
-  Invertibility_report report;
-  report.number_of_elements = simplices.size();
   const auto signs = internal::relative_signs<D>(positions, simplices, reference_orientation);
   const auto only_fixed = internal::elements_with_only_fixed_vertices(simplices, is_fixed);
-  internal::Defect_recorder record(report, only_fixed);
-  record.elements(signs);
+  Invertibility_report report = internal::element_report(signs, only_fixed);
 
-  auto check_vertex = [&](std::size_t v, internal::Star_type type, double sum, const auto& star) {
-    if(type == internal::Star_type::NON_MANIFOLD)
-      ++report.non_manifold;
-    else if(record.is_overwound(type, sum, D == 2 ? internal::two_pi : 2 * internal::two_pi))
-      record.vertex(v, type, star);
-  };
-  if constexpr(D == 2) {
-    internal::visit_vertex_stars_2(positions, simplices, reference_orientation, signs, check_vertex);
-  } else {
-    const auto stars = internal::build_vertex_stars(positions.size(), simplices);
-    internal::visit_edge_fans_3(positions, simplices, reference_orientation, signs, stars,
-      [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto& fan) {
-        if(type == internal::Star_type::NON_MANIFOLD)
-          ++report.non_manifold;
-        else if(record.is_overwound(type, sum, internal::two_pi))
-          record.edge(a, b, type, fan);
-      });
-    internal::visit_vertex_stars_3(positions, simplices, reference_orientation, signs, stars, check_vertex);
-  }
+  const std::size_t n = positions.size();
+  const internal::Vertex_stars stars = internal::build_vertex_stars(n, simplices);
+  if constexpr(D == 3)
+    internal::check_vertex_chunks(n, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+      internal::Defect_recorder record(part, only_fixed);
+      internal::visit_edge_fans_3(positions, simplices, reference_orientation, signs, stars, first, last,
+        [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto& fan) {
+          if(type == internal::Star_type::NON_MANIFOLD)
+            ++part.non_manifold;
+          else if(record.is_overwound(type, sum, internal::two_pi))
+            record.edge(a, b, type, fan);
+        });
+    });
+  internal::check_vertex_chunks(n, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+    internal::Defect_recorder record(part, only_fixed);
+    auto check_vertex = [&](std::size_t v, internal::Star_type type, double sum, const auto& star) {
+      if(type == internal::Star_type::NON_MANIFOLD)
+        ++part.non_manifold;
+      else if(record.is_overwound(type, sum, D == 2 ? internal::two_pi : 2 * internal::two_pi))
+        record.vertex(v, type, star);
+    };
+    if constexpr(D == 2)
+      internal::visit_vertex_stars_2(positions, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+    else
+      internal::visit_vertex_stars_3(positions, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+  });
   return report;
 }
 
@@ -668,8 +714,11 @@ inline std::vector<double> vertex_covering_numbers_2(const std::vector<std::arra
 {
   std::vector<double> covering(positions.size(), 0.);
   const auto signs = internal::relative_signs<2>(positions, triangles, reference_orientation);
-  internal::visit_vertex_stars_2(positions, triangles, reference_orientation, signs,
-    [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / internal::two_pi; });
+  const auto stars = internal::build_vertex_stars(positions.size(), triangles);
+  internal::for_each_vertex_chunk(positions.size(), [&](std::size_t, std::size_t first, std::size_t last) {
+    internal::visit_vertex_stars_2(positions, triangles, reference_orientation, signs, stars, first, last,
+      [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / internal::two_pi; });
+  });
   return covering;
 }
 
@@ -682,8 +731,10 @@ inline std::vector<double> vertex_covering_numbers_3(const std::vector<std::arra
   std::vector<double> covering(positions.size(), 0.);
   const auto signs = internal::relative_signs<3>(positions, tets, reference_orientation);
   const auto stars = internal::build_vertex_stars(positions.size(), tets);
-  internal::visit_vertex_stars_3(positions, tets, reference_orientation, signs, stars,
-    [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / (2 * internal::two_pi); });
+  internal::for_each_vertex_chunk(positions.size(), [&](std::size_t, std::size_t first, std::size_t last) {
+    internal::visit_vertex_stars_3(positions, tets, reference_orientation, signs, stars, first, last,
+      [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / (2 * internal::two_pi); });
+  });
   return covering;
 }
 
@@ -703,14 +754,19 @@ inline std::vector<Edge_covering> edge_covering_numbers_3(const std::vector<std:
                                                           const std::vector<std::array<std::size_t, 4>>& tets,
                                                           const std::vector<int>& reference_orientation = {})
 {
-  std::vector<Edge_covering> coverings;
   const auto signs = internal::relative_signs<3>(positions, tets, reference_orientation);
   const auto stars = internal::build_vertex_stars(positions.size(), tets);
-  internal::visit_edge_fans_3(positions, tets, reference_orientation, signs, stars,
-    [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto&) {
-      coverings.push_back({{a, b}, sum / internal::two_pi, type == internal::Star_type::OPEN,
-                           type != internal::Star_type::NON_MANIFOLD});
-    });
+  std::vector<std::vector<Edge_covering>> parts(internal::number_of_vertex_chunks(positions.size()));
+  internal::for_each_vertex_chunk(positions.size(), [&](std::size_t chunk, std::size_t first, std::size_t last) {
+    internal::visit_edge_fans_3(positions, tets, reference_orientation, signs, stars, first, last,
+      [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto&) {
+        parts[chunk].push_back({{a, b}, sum / internal::two_pi, type == internal::Star_type::OPEN,
+                                type != internal::Star_type::NON_MANIFOLD});
+      });
+  });
+  std::vector<Edge_covering> coverings;
+  for(const auto& part : parts)
+    internal::append(coverings, part);
   return coverings;
 }
 

@@ -16,6 +16,7 @@
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
+#include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -33,6 +34,47 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// What METIS has divided AMD's predicted factorization flops by, at most,
+/// on our problems (2D grids; about 1.5 on 3D grids, 1 on the data sets).
+constexpr double metis_gain_at_most = 4;
+
+/// The free vertices numbered 0, 1, ... in vertex order (-1 for a fixed vertex).
+struct Free_numbering
+{
+  std::vector<int> index;
+  int count = 0;
+
+  explicit Free_numbering(const std::vector<char>& is_fixed) : index(is_fixed.size(), -1)
+  {
+    for(std::size_t v = 0; v < is_fixed.size(); ++v)
+      if(!is_fixed[v]) index[v] = count++;
+  }
+};
+
+/// Per free vertex j, the free vertices i >= j that share an element with
+/// it, sorted, j itself always first (even for a vertex in no element): the
+/// lower triangle of the Hessian's pattern, one entry per d x d block.
+template <int d>
+std::vector<std::vector<int>> lower_vertex_graph(const Untangling_problem<d>& P, const Free_numbering& free)
+{
+  std::vector<std::vector<int>> rows(free.count);
+  const Vertex_stars stars = build_vertex_stars(P.number_of_vertices, P.elements);
+  for_each_vertex_chunk(P.number_of_vertices, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t v = first; v < last; ++v) {
+      const int j = free.index[v];
+      if(j < 0) continue;
+      std::vector<int>& r = rows[j];
+      r.push_back(j);
+      for(std::size_t s = stars.begin(v); s < stars.end(v); ++s)
+        for(std::size_t a : P.elements[stars.elements[s]])
+          if(free.index[a] > j) r.push_back(free.index[a]);
+      std::sort(r.begin(), r.end());
+      r.erase(std::unique(r.begin(), r.end()), r.end());
+    }
+  });
+  return rows;
+}
+
 /// Sparsity of the Hessian restricted to free vertices, stored as dense
 /// d x d blocks in its lower triangle only (block rows >= block column; the
 /// diagonal blocks whole), which is all the Cholesky factorizations read.
@@ -45,28 +87,15 @@ class Hessian_pattern
 public:
   explicit Hessian_pattern(const Untangling_problem<d>& P)
   {
-    const std::size_t n = P.number_of_vertices;
-    free_index_.assign(n, -1);
-    for(std::size_t v = 0; v < n; ++v)
-      if(!P.is_fixed[v]) free_index_[v] = number_of_free_++;
-
-    // rows of every block column (lower triangle: rows >= column); every
-    // diagonal block is stored, even that of a free vertex in no element,
-    // so that the solver can shift the diagonal in place
-    std::vector<std::vector<int>> rows(number_of_free_);
-    for(int j = 0; j < number_of_free_; ++j) rows[j].push_back(j);
-    for(const auto& e : P.elements)
-      for(std::size_t a : e)
-        for(std::size_t b : e)
-          if(free_index_[b] >= 0 && free_index_[a] >= free_index_[b])
-            rows[free_index_[b]].push_back(free_index_[a]);
+    const Free_numbering free(P.is_fixed);
+    free_index_ = free.index;
+    number_of_free_ = free.count;
+    // every diagonal block is stored, even that of a free vertex in no
+    // element, so that the solver can shift the diagonal in place
+    const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
     std::vector<int> column_start(number_of_free_ + 1, 0);   // per block column, into its blocks
-    for(int j = 0; j < number_of_free_; ++j) {
-      auto& r = rows[j];
-      std::sort(r.begin(), r.end());
-      r.erase(std::unique(r.begin(), r.end()), r.end());
-      column_start[j + 1] = column_start[j] + static_cast<int>(r.size());
-    }
+    for(int j = 0; j < number_of_free_; ++j)
+      column_start[j + 1] = column_start[j] + static_cast<int>(rows[j].size());
 
     // scalar compressed-column structure: column J*d+c holds the blocks of block column J
     const int N = d * number_of_free_;
@@ -158,6 +187,39 @@ private:
   Eigen::SparseMatrix<double> matrix_;
 };
 
+/// Floating-point operations of one factorization of the Hessian, predicted
+/// from the free vertices' graph: CHOLMOD's AMD analysis of that scalar
+/// pattern, d^2 times smaller than the Hessian's, times d^3 for its dense
+/// d x d blocks (a column count c of the graph's factor is d columns of
+/// about d c entries in the Hessian's).  It lets Solver::AUTOMATIC hand
+/// large grids over to L-BFGS without building the Hessian's pattern.
+/// Negative without CHOLMOD: no prediction.
+template <int d>
+double predicted_factorization_flops(const Untangling_problem<d>& P)
+{
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+  const Free_numbering free(P.is_fixed);
+  if(free.count == 0) return 0;
+  const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
+  Eigen::SparseMatrix<double> graph(free.count, free.count);
+  std::vector<Eigen::Index> sizes(free.count);
+  for(int j = 0; j < free.count; ++j) sizes[j] = static_cast<Eigen::Index>(rows[j].size());
+  graph.reserve(sizes);
+  for(int j = 0; j < free.count; ++j)
+    for(int i : rows[j]) graph.insert(i, j) = 1;
+  graph.makeCompressed();
+  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> analysis;
+  cholmod_common& c = analysis.cholmod();
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_AMD;
+  analysis.analyzePattern(graph);
+  return c.fl * d * d * d;
+#else
+  (void)P;
+  return -1;
+#endif
+}
+
 /// Doublings of an accepted full step at most (see Newton_solver::minimize).
 constexpr int max_extrapolations = 4;
 
@@ -219,8 +281,8 @@ public:
   /// Builds the Hessian's pattern and its symbolic factorization, whose
   /// cost prediction (`factorization_flops`) tells the caller whether this
   /// solver pays on the problem.  When the fill-reducing ordering of AMD
-  /// alone predicts more than 8 times `flops_limit`, the analysis stops
-  /// there: the caller will not factorize.
+  /// alone predicts more than `metis_gain_at_most` times `flops_limit`, the
+  /// analysis stops there: the caller will not factorize.
   explicit Newton_solver(const Untangling_problem<d>& P,
                          double flops_limit = std::numeric_limits<double>::infinity())
     : pattern_(P)
@@ -445,8 +507,8 @@ private:
     // Let CHOLMOD keep the better of AMD and METIS: by default it tries
     // METIS only when AMD's fill looks bad, and misses e.g. 2D grids.  METIS
     // costs several times AMD's time (3.4 s against 0.8 s on a million
-    // tetrahedra) and has divided AMD's flops by at most 4 on our problems:
-    // beyond 8 times the caller's limit it cannot bring them under it.
+    // tetrahedra) and cannot bring AMD's flops under the caller's limit when
+    // they exceed it metis_gain_at_most times.
     for(int methods : {1, 2}) {
       factorization_ = std::make_unique<Factorization>();
       cholmod_common& c = factorization_->cholmod();
@@ -462,7 +524,7 @@ private:
       c.final_ll = 1;
       factorization_->analyzePattern(H);
       factorization_flops_ = c.fl;
-      if(factorization_flops_ > 8 * flops_limit) break;
+      if(factorization_flops_ > metis_gain_at_most * flops_limit) break;
     }
 #else
     (void)flops_limit;

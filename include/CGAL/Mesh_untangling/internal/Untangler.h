@@ -56,7 +56,10 @@ constexpr int max_restarts = 10;           // shakes in stage 1
 /// such well-shaped meshes in a few hundred passes in all (square:300: 100 s
 /// with Newton, 1.5 s with L-BFGS).  Small but hard volume meshes (the
 /// rotated cavities at size 0.3: 5.8e8 flops, 40,000 per element) need
-/// Newton and stay below the absolute bound.
+/// Newton and stay below the absolute bound.  The cost is first predicted
+/// from the vertex graph (`predicted_factorization_flops`, within 15 % of
+/// the full analysis with AMD on the data sets and grids); only when that
+/// cannot settle it is the Hessian's pattern built and analysed.
 constexpr double hand_over_above_flops = 1e9;
 constexpr double hand_over_above_flops_per_element = 4000;
 
@@ -188,17 +191,25 @@ private:
     if(newton_problem_ != &P) {
       const bool automatic = options_.solver == Solver::AUTOMATIC;
       const double limit = std::max(hand_over_above_flops, hand_over_above_flops_per_element * P.elements.size());
+      const double predicted = automatic ? predicted_factorization_flops(P) : -1;
+      // The prediction uses AMD alone; METIS, tried by the full analysis,
+      // has divided AMD's flops by up to 4 on our problems (2D grids).
+      if(predicted > metis_gain_at_most * limit) return hand_over(P, predicted);
       newton_ = std::make_unique<Newton_solver<d>>(P, automatic ? limit : std::numeric_limits<double>::infinity());
       newton_problem_ = &P;
-      const double flops = newton_->factorization_flops();
-      if(automatic && flops > limit) {
-        newton_.reset();
-        solver_ = Solver::LBFGS;
-        result_.solver = to_string(Solver::LBFGS) + " (a Newton factorization would cost " +
-                         std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element)";
-      }
+      if(automatic && newton_->factorization_flops() > limit) return hand_over(P, newton_->factorization_flops());
     }
     return newton_.get();
+  }
+
+  /// Solver::AUTOMATIC's switch to L-BFGS, for good: a factorization would cost `flops`.
+  Newton_solver<d>* hand_over(const Untangling_problem<d>& P, double flops)
+  {
+    newton_.reset();
+    solver_ = Solver::LBFGS;
+    result_.solver = to_string(Solver::LBFGS) + " (a Newton factorization would cost " +
+                     std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element)";
+    return nullptr;
   }
 
   /// Inner iterations per eps step: the caller's, else the published
@@ -263,17 +274,19 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
       for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
 }
 
-/// The invertibility report on the mesh part of `in` (phantoms left out).
+/// The invertibility report on the mesh part of `in` (phantoms left out);
+/// with `stars_too` false, only what the element orientations decide.
 template <int d>
 Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                const std::vector<bool>& is_fixed)
+                                const std::vector<bool>& is_fixed, bool stars_too = true)
 {
   const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
   const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
   const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
   const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
   const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
-  return check_local_invertibility<d>(as_arrays<d>(positions), elements, orientation, fixed);
+  return stars_too ? check_local_invertibility<d>(as_arrays<d>(positions), elements, orientation, fixed)
+                   : check_elements<d>(as_arrays<d>(positions), elements, orientation, fixed);
 }
 
 /// Untangles `in.positions` in place, directly from the given map (free
@@ -319,7 +332,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
   const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report before = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  const Invertibility_report before = check_mesh<d>(in, P.reference_orientation, is_fixed, false);
   result.inverted_before = before.inverted_elements;
   result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
 

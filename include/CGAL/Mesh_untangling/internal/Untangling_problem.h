@@ -4,6 +4,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
 
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
 #include <Eigen/Dense>
 
@@ -43,6 +44,10 @@ struct Untangling_input
   // scaling and every verdict concern the mesh's own elements only.
   std::size_t phantom_elements = 0;
   std::size_t phantom_vertices = 0;
+
+  // has_free_boundary_vertex() once asked: it reads the mesh part and its
+  // fixed flags only, which no step of a run changes.
+  mutable std::optional<bool> free_boundary_vertex;
 
   std::size_t number_of_mesh_vertices() const { return positions.size() - phantom_vertices; }
   std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
@@ -171,30 +176,15 @@ double mean_ratio(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
   return r_sq * std::pow(v, 2. / d) / sum_sq;
 }
 
-/// Vertices of the facets that belong to exactly one element.
 template <int d>
-std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements)
+bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
-  std::vector<std::array<std::size_t, d>> facets;
-  facets.reserve(elements.size() * (d + 1));
-  for(const auto& e : elements)
-    for(int skip = 0; skip <= d; ++skip) {
-      std::array<std::size_t, d> f;
-      for(int i = 0, k = 0; i <= d; ++i)
-        if(i != skip) f[k++] = e[i];
-      std::sort(f.begin(), f.end());
-      facets.push_back(f);
-    }
-  std::sort(facets.begin(), facets.end());
-  std::vector<char> on_boundary(n, 0);
-  for(std::size_t i = 0; i < facets.size();) {
-    std::size_t j = i;
-    while(j < facets.size() && facets[j] == facets[i]) ++j;
-    if(j - i == 1)
-      for(std::size_t v : facets[i]) on_boundary[v] = 1;
-    i = j;
-  }
-  return on_boundary;
+  const std::size_t n = in.number_of_mesh_vertices();
+  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + in.number_of_mesh_elements());
+  const std::vector<char> on_boundary = boundary_vertices<d>(n, mesh);
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
+  return false;
 }
 
 /// Whether some vertex on the boundary of the mesh (phantoms left out) is free:
@@ -203,12 +193,8 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
 template <int d>
 bool has_free_boundary_vertex(const Untangling_input<d>& in)
 {
-  const std::size_t n = in.number_of_mesh_vertices();
-  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + in.number_of_mesh_elements());
-  const std::vector<char> on_boundary = boundary_vertices<d>(n, mesh);
-  for(std::size_t v = 0; v < n; ++v)
-    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
-  return false;
+  if(!in.free_boundary_vertex) in.free_boundary_vertex = find_free_boundary_vertex(in);
+  return *in.free_boundary_vertex;
 }
 
 /// The rest shape the targets describe when they agree at every shared

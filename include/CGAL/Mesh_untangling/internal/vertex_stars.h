@@ -1,0 +1,108 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Vertex stars of a simplex soup, and what is read off them vertex by vertex:
+// the work of one vertex touches only its star, so vertices are processed in
+// fixed chunks, concurrently when TBB is linked, without a global sort.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_VERTEX_STARS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_VERTEX_STARS_H
+
+#include <CGAL/Mesh_untangling/internal/parallel_loops.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// Vertices per chunk of a star loop: a star is tens of elements, so this
+/// amortizes scheduling as `element_chunk_size` does for element loops.
+constexpr std::size_t vertex_chunk_size = 1024;
+
+/// Vertex -> incident elements, in compressed rows, so that every star is
+/// visited in O(size of the star) without a hash map.  An element listed
+/// twice in a row of the star is one with a repeated vertex.
+struct Vertex_stars
+{
+  std::vector<std::size_t> offsets, elements;
+  std::size_t begin(std::size_t v) const { return offsets[v]; }
+  std::size_t end(std::size_t v) const { return offsets[v + 1]; }
+};
+
+template <std::size_t N>
+Vertex_stars build_vertex_stars(std::size_t number_of_vertices,
+                                const std::vector<std::array<std::size_t, N>>& simplices)
+{
+  Vertex_stars stars;
+  stars.offsets.assign(number_of_vertices + 1, 0);
+  for(const auto& s : simplices)
+    for(std::size_t v : s)
+      ++stars.offsets[v + 1];
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+    stars.offsets[v + 1] += stars.offsets[v];
+  stars.elements.resize(stars.offsets.back());
+  std::vector<std::size_t> fill(stars.offsets.begin(), stars.offsets.end() - 1);
+  for(std::size_t i = 0; i < simplices.size(); ++i)
+    for(std::size_t v : simplices[i])
+      stars.elements[fill[v]++] = i;
+  return stars;
+}
+
+/// Calls `body(chunk, first, last)` on the chunks of vertices [first, last) of [0, n).
+template <class Body>
+void for_each_vertex_chunk(std::size_t n, Body&& body)
+{
+  for_each_chunk(n, vertex_chunk_size, body);
+}
+
+inline std::size_t number_of_vertex_chunks(std::size_t n)
+{ return (n + vertex_chunk_size - 1) / vertex_chunk_size; }
+
+/// Vertices of the facets that belong to exactly one element.  A facet is
+/// looked for in the star of its smallest vertex only, which holds every
+/// element it belongs to.
+template <int d>
+std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements)
+{
+  using Facet = std::array<std::size_t, d>;
+  const Vertex_stars stars = build_vertex_stars(n, elements);
+  std::vector<std::vector<Facet>> boundary_facets(number_of_vertex_chunks(n));
+  for_each_vertex_chunk(n, [&](std::size_t chunk, std::size_t first, std::size_t last) {
+    std::vector<Facet> facets;
+    for(std::size_t v = first; v < last; ++v) {
+      facets.clear();
+      for(std::size_t s = stars.begin(v); s < stars.end(v); ++s) {
+        if(s > stars.begin(v) && stars.elements[s] == stars.elements[s - 1]) continue;
+        const auto& e = elements[stars.elements[s]];
+        for(int skip = 0; skip <= d; ++skip) {
+          Facet f;
+          for(int i = 0, k = 0; i <= d; ++i)
+            if(i != skip) f[k++] = e[i];
+          std::sort(f.begin(), f.end());
+          if(f[0] == v) facets.push_back(f);
+        }
+      }
+      std::sort(facets.begin(), facets.end());
+      for(std::size_t i = 0; i < facets.size();) {
+        std::size_t j = i;
+        while(j < facets.size() && facets[j] == facets[i]) ++j;
+        if(j - i == 1) boundary_facets[chunk].push_back(facets[i]);
+        i = j;
+      }
+    }
+  });
+  std::vector<char> on_boundary(n, 0);
+  for(const auto& chunk : boundary_facets)
+    for(const Facet& f : chunk)
+      for(std::size_t v : f) on_boundary[v] = 1;
+  return on_boundary;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_VERTEX_STARS_H
