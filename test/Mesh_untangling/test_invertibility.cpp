@@ -6,6 +6,10 @@
 
 #include <CGAL/Mesh_untangling/invertibility.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -447,6 +452,109 @@ static bool test_armadillo(const std::string& data_dir)
   return true;
 }
 
+static bool same_report(const MU::Invertibility_report& a, const MU::Invertibility_report& b)
+{
+  return a.number_of_elements == b.number_of_elements && a.inverted_elements == b.inverted_elements &&
+         a.overwound_interior_vertices == b.overwound_interior_vertices &&
+         a.overwound_boundary_vertices == b.overwound_boundary_vertices &&
+         a.overwound_interior_edges == b.overwound_interior_edges &&
+         a.overwound_boundary_edges == b.overwound_boundary_edges && a.input_defects == b.input_defects &&
+         a.non_manifold == b.non_manifold && a.inverted_element_ids == b.inverted_element_ids &&
+         a.overwound_vertex_ids == b.overwound_vertex_ids && a.overwound_edges == b.overwound_edges &&
+         a.input_defect_element_ids == b.input_defect_element_ids &&
+         a.input_defect_vertex_ids == b.input_defect_vertex_ids && a.input_defect_edges == b.input_defect_edges &&
+         a.min_covering == b.min_covering && a.max_covering == b.max_covering &&
+         a.max_boundary_covering == b.max_boundary_covering;
+}
+
+// Vertices are checked in chunks of 1024, concurrently: on a cube of 2,197
+// vertices (three chunks) with scattered defects, the report must list every
+// defect once, sorted, the same with one thread and with two.
+static void test_chunks_3()
+{
+  Points3 points;
+  Tets tets;
+  const std::size_t n = 12;
+  cube_3(n, points, tets);
+  CHECK(points.size() > 2 * 1024);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> shift(-1.5, 1.5);
+  std::vector<bool> fixed(points.size(), false);
+  for(std::size_t v = 0; v < points.size(); v += 37)
+    for(double& c : points[v]) c += shift(random);
+  for(std::size_t v = 0; v < points.size(); v += 5) fixed[v] = true;
+
+  const auto serial_reference = [&] {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+#endif
+    return MU::check_local_invertibility(points, tets, {}, fixed);
+  }();
+  const auto r = MU::check_local_invertibility(points, tets, {}, fixed);
+  CHECK(same_report(r, serial_reference));
+  CHECK(r.inverted_elements + r.input_defects >= brute_force_inverted_3(points, tets));
+  CHECK(r.inverted_elements > 0 && r.overwound_edges.size() > 0 && r.overwound_vertex_ids.size() > 0);
+  CHECK(std::is_sorted(r.inverted_element_ids.begin(), r.inverted_element_ids.end()));
+  CHECK(std::is_sorted(r.overwound_vertex_ids.begin(), r.overwound_vertex_ids.end()));
+  CHECK(std::adjacent_find(r.overwound_vertex_ids.begin(), r.overwound_vertex_ids.end()) == r.overwound_vertex_ids.end());
+  CHECK(std::is_sorted(r.overwound_edges.begin(), r.overwound_edges.end()));
+  CHECK(std::adjacent_find(r.overwound_edges.begin(), r.overwound_edges.end()) == r.overwound_edges.end());
+  // ids from more than one chunk
+  std::cout << "chunked check: " << r.overwound_vertex_ids.size() << " over-wound vertices, "
+            << r.overwound_edges.size() << " over-wound edges, from vertex " << r.overwound_edges.front()[0]
+            << " to " << r.overwound_edges.back()[0] << "\n";
+  CHECK(r.overwound_edges.back()[0] >= 1024 && r.overwound_edges.front()[0] < 1024);
+  CHECK(MU::number_of_inverted_elements(points, tets) == brute_force_inverted_3(points, tets));
+
+  // The covering numbers read the same stars: they agree with the report.
+  const auto vertex_covering = MU::vertex_covering_numbers_3(points, tets);
+  for(std::size_t v : r.overwound_vertex_ids)
+    CHECK(std::abs(vertex_covering[v] - 1.) > 0.5 || vertex_covering[v] > 1.);
+  const auto edges = MU::edge_covering_numbers_3(points, tets);
+  CHECK(std::is_sorted(edges.begin(), edges.end(),
+                       [](const MU::Edge_covering& a, const MU::Edge_covering& b) { return a.edge < b.edge; }));
+  std::size_t wrong_interior = 0;
+  for(const auto& e : edges)
+    wrong_interior += e.is_manifold && !e.on_boundary && std::round(e.covering) != 1.;
+  CHECK(wrong_interior == r.overwound_interior_edges);
+}
+
+// Boundary vertices, found facet by facet in the star of the facet's
+// smallest vertex, against a global sort of all facets.
+static void test_boundary_vertices_3()
+{
+  Points3 points;
+  Tets tets;
+  const std::size_t n = 12;
+  cube_3(n, points, tets);
+  tets.push_back({5, 5, 6, 7});   // a repeated vertex: facets (5, 5, 6) and (5, 5, 7) appear once
+  const std::vector<char> found = MU::internal::boundary_vertices<3>(points.size(), tets);
+
+  std::vector<std::array<std::size_t, 3>> facets;
+  for(const auto& t : tets)
+    for(int skip = 0; skip < 4; ++skip) {
+      std::array<std::size_t, 3> f;
+      for(int i = 0, k = 0; i < 4; ++i)
+        if(i != skip) f[k++] = t[i];
+      std::sort(f.begin(), f.end());
+      facets.push_back(f);
+    }
+  std::sort(facets.begin(), facets.end());
+  std::vector<char> expected(points.size(), 0);
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i;
+    while(j < facets.size() && facets[j] == facets[i]) ++j;
+    if(j - i == 1)
+      for(std::size_t v : facets[i]) expected[v] = 1;
+    i = j;
+  }
+  CHECK(found == expected);
+  std::size_t on_cube_faces = 0;
+  for(const auto& p : points)
+    on_cube_faces += std::any_of(p.begin(), p.end(), [&](double c) { return c == 0 || c == double(n); });
+  CHECK(std::size_t(std::count(found.begin(), found.end(), 1)) == on_cube_faces);
+}
+
 int main(int argc, char** argv)
 {
   test_grid_2();
@@ -454,6 +562,8 @@ int main(int argc, char** argv)
   test_cube_3();
   test_coverings_3();
   test_input_defects_3();
+  test_chunks_3();
+  test_boundary_vertices_3();
   const bool ran_data = argc > 1 && test_armadillo(argv[1]);
   if(argc <= 1)
     std::cout << "SKIPPED: no data directory given, real data not checked\n";

@@ -334,6 +334,24 @@ void check_assembly(std::mt19937& random, int n)
 #endif
 }
 
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+/// The factorization cost predicted from the vertex graph (what
+/// Solver::AUTOMATIC decides on first) against CHOLMOD's analysis of the
+/// Hessian itself with the same ordering method (AMD: a limit of 1 flop
+/// stops the analysis before METIS).
+template <int d>
+void check_prediction(std::mt19937& random, int n)
+{
+  const Untangling_problem<d> P = perturbed_grid<d>(n, 1.0, random);
+  const double predicted = predicted_factorization_flops(P);
+  const double analysed = Newton_solver<d>(P, 1.).factorization_flops();
+  std::cout << "d=" << d << ", " << P.elements.size() << " elements: factorization predicted at " << predicted
+            << " flops, analysed at " << analysed << "\n";
+  CHECK_MESSAGE(analysed > 0 && predicted >= 0.8 * analysed && predicted <= 1.5 * analysed,
+                "d=" << d << ": predicted " << predicted << " against " << analysed);
+}
+#endif
+
 int main()
 {
   std::mt19937 random(11);
@@ -343,6 +361,10 @@ int main()
   check_assembly<3>(random, 12);
   check_colouring<2>(random, 20);
   check_colouring<3>(random, 6);
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+  check_prediction<2>(random, 60);
+  check_prediction<3>(random, 14);
+#endif
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();
 }
