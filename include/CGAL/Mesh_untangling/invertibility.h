@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -285,28 +286,27 @@ public:
 /// characteristic, so they are rejected too.
 class Surface_classifier
 {
-  std::vector<std::pair<std::size_t, std::size_t>> directed_;
-  std::vector<std::size_t> vertices_, parent_;
+  std::vector<std::size_t> vertices_;                  // of the link, sorted: local id = rank
+  std::vector<std::array<std::uint32_t, 3>> local_;    // the link triangles in local ids
+  std::vector<std::uint64_t> directed_;                // directed edges, (from << 32) | to
+  std::vector<std::uint32_t> parent_;
 
-  std::size_t local(std::size_t v) const
-  { return std::size_t(std::lower_bound(vertices_.begin(), vertices_.end(), v) - vertices_.begin()); }
-
-  std::size_t root(std::size_t i)
+  std::uint32_t root(std::uint32_t i)
   {
     while(parent_[i] != i)
       i = parent_[i] = parent_[parent_[i]];
     return i;
   }
 
-  bool is_connected(const std::vector<std::array<std::size_t, 3>>& triangles)
+  bool is_connected()
   {
     parent_.resize(vertices_.size());
-    for(std::size_t i = 0; i < parent_.size(); ++i)
+    for(std::uint32_t i = 0; i < parent_.size(); ++i)
       parent_[i] = i;
     std::size_t components = vertices_.size();
-    for(const auto& t : triangles)
+    for(const auto& t : local_)
       for(int k = 1; k < 3; ++k) {
-        std::size_t a = root(local(t[0])), b = root(local(t[k]));
+        const std::uint32_t a = root(t[0]), b = root(t[k]);
         if(a != b) {
           parent_[a] = b;
           --components;
@@ -318,28 +318,34 @@ class Surface_classifier
 public:
   Star_type operator()(const std::vector<std::array<std::size_t, 3>>& triangles)
   {
-    directed_.clear();
+    // Local ids first: the sorts and searches below then work on small integers.
     vertices_.clear();
     for(const auto& t : triangles)
-      for(int k = 0; k < 3; ++k) {
-        directed_.emplace_back(t[k], t[(k + 1) % 3]);
-        vertices_.push_back(t[k]);
-      }
+      vertices_.insert(vertices_.end(), t.begin(), t.end());
+    std::sort(vertices_.begin(), vertices_.end());
+    vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+    local_.resize(triangles.size());
+    directed_.clear();
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      for(int k = 0; k < 3; ++k)
+        local_[i][k] = std::uint32_t(std::lower_bound(vertices_.begin(), vertices_.end(), triangles[i][k]) -
+                                     vertices_.begin());
+      for(int k = 0; k < 3; ++k)
+        directed_.push_back(std::uint64_t(local_[i][k]) << 32 | local_[i][(k + 1) % 3]);
+    }
     std::sort(directed_.begin(), directed_.end());
     // A repeated directed edge is a face shared by more than two elements or
     // met twice with the same orientation.
     if(std::adjacent_find(directed_.begin(), directed_.end()) != directed_.end())
       return Star_type::NON_MANIFOLD;
     std::size_t paired = 0;
-    for(const auto& e : directed_)
-      paired += std::binary_search(directed_.begin(), directed_.end(), std::make_pair(e.second, e.first));
+    for(std::uint64_t e : directed_)
+      paired += std::binary_search(directed_.begin(), directed_.end(), e << 32 | e >> 32);
     const std::size_t unpaired = directed_.size() - paired;
     const std::size_t edges = unpaired + paired / 2;
 
-    std::sort(vertices_.begin(), vertices_.end());
-    vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
     const long euler = long(vertices_.size()) - long(edges) + long(triangles.size());
-    if(euler != (unpaired == 0 ? 2 : 1) || !is_connected(triangles))
+    if(euler != (unpaired == 0 ? 2 : 1) || !is_connected())
       return Star_type::NON_MANIFOLD;
     return unpaired == 0 ? Star_type::CLOSED : Star_type::OPEN;
   }
