@@ -212,6 +212,7 @@ struct Row
   std::string outcome;        // "yes", or why not
   double wall_seconds = 0;    // as seen by the parent, loading included
   double peak_mib = -1;       // -1: unknown
+  double killed_after = -1;   // the time limit the run was killed for overrunning; -1: not killed
 
   std::string get(const std::string& key, const std::string& missing = "—") const
   {
@@ -220,6 +221,9 @@ struct Row
   }
   bool has(const std::string& key) const { return values.count(key) != 0; }
   double seconds() const { return std::stod(get("seconds", "0")); }
+  /// What the untangling took at least: its seconds, or the time limit it
+  /// overran when it was killed before it could report them.
+  double seconds_at_least() const { return has("seconds") ? seconds() : std::max(killed_after, 0.); }
 };
 
 std::string format_fixed(double value, int decimals)
@@ -324,6 +328,7 @@ Row run_case(const Case_spec& c, const std::string& solver, double time_limit, i
 
   if(killed) {
     row.outcome = "killed: still running after " + format_plain(hard_limit) + " s";
+    row.killed_after = time_limit;
   } else if(WIFSIGNALED(status)) {
     const int signal = WTERMSIG(status);
     row.outcome = "crashed: signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
@@ -435,7 +440,7 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
         const Row& rb = row_of(c, b);
         solved_a += ra.success;
         solved_b += rb.success;
-        const double ratio = std::max(rb.seconds(), 1e-6) / std::max(ra.seconds(), 1e-6);
+        const double ratio = std::max(rb.seconds_at_least(), 1e-6) / std::max(ra.seconds_at_least(), 1e-6);
         if(ra.success && rb.success) ratios.push_back(ratio);
         else if(ra.success) only_a.push_back(cases[c].name);
         else if(rb.success) only_b.push_back(cases[c].name);
@@ -453,7 +458,8 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
       if(bounds.size() > ratios.size())
         out << "- median time ratio " << solvers[b] << "/" << solvers[a] << " over the " << bounds.size()
             << " case(s) either solved, at a lower bound (solved only by " << solvers[a] << ": the time "
-            << solvers[b] << " took before it stopped; solved only by " << solvers[b] << ": 0): "
+            << solvers[b] << " took before it stopped, or the time limit if it was killed; solved only by "
+            << solvers[b] << ": 0): "
             << format_fixed(median(bounds), 2) << "\n";
       out << "- solved only by " << solvers[a] << ": " << escape_cell(join(only_a)) << "\n";
       out << "- solved only by " << solvers[b] << ": " << escape_cell(join(only_b)) << "\n";

@@ -12,6 +12,7 @@
 #include "test_common.h"
 
 #include <filesystem>
+#include <limits>
 #include <set>
 
 using namespace Mesh_untangling_tools;
@@ -44,6 +45,35 @@ bool run(const Case_spec& c, double time_limit, std::size_t expected_input_defec
   return verdict.locally_invertible && verdict.inverted == 0 && result.is_locally_invertible();
 }
 
+/// The published scheme's inner solve watches the clock: on i23c_s31 its
+/// first eps step alone makes thousands of L-BFGS iterations, and a limit
+/// of a tenth of that step's time must stop it in the middle.
+void check_time_limit_inside_inner_solve(const std::string& data)
+{
+  Case_spec c;
+  for(const Case_spec& s : all_fixed_boundary(data))
+    if(s.name == "i23c_s31.hexex_block427") c = s;
+  CHECK(!c.name.empty());
+  if(c.name.empty()) return;
+  const auto one_step = [&](double seconds) {
+    Problem p = load(c);
+    Run_options options;
+    options.solver = "lbfgs";
+    options.max_iterations = 1;
+    options.max_seconds = seconds;
+    return untangle_mesh_file(p.mesh, p.is_fixed, options);
+  };
+  const auto whole = one_step(std::numeric_limits<double>::infinity());
+  const auto cut = one_step(whole.seconds / 10);
+  std::cout << c.name << ", lbfgs, first eps step: " << whole.energy_evaluations << " evaluations in "
+            << whole.seconds << " s; with a limit of a tenth of that, " << cut.energy_evaluations
+            << " evaluations in " << cut.seconds << " s\n";
+  CHECK_MESSAGE(cut.status == CGAL::Mesh_untangling::Untangling_status::TIME_LIMIT_REACHED,
+                CGAL::Mesh_untangling::to_string(cut.status));
+  CHECK_MESSAGE(whole.energy_evaluations > 1000 && cut.energy_evaluations < whole.energy_evaluations / 2,
+                cut.energy_evaluations << " of " << whole.energy_evaluations << " evaluations");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -58,6 +88,7 @@ int main(int argc, char** argv)
     if(is_block == cuboidblocks) cases.push_back(c);
   }
   CHECK(cases.size() == (cuboidblocks ? 14u : 5u));
+  if(!cuboidblocks) check_time_limit_inside_inner_solve(data);
   for(const Case_spec& c : cases) {
     // lim/armadillo-598: its fixed boundary is over-wound at 5 edges and 2 vertices whose tets are all fixed
     const std::size_t input_defects = c.kind == Case_spec::PAIR ? 7 : 0;

@@ -64,14 +64,21 @@ class LBFGS_solver
 {
 public:
   /// Partially minimizes F(., eps) from P.x; P.x receives the result.
-  Inner_statistics minimize(Untangling_problem<d>& P, double eps, double theta, int max_iterations) const
+  /// `out_of_time` is asked before every evaluation: one inner solve of the
+  /// published scheme may make 3,000 to 30,000 iterations (over 30 s on the
+  /// CuboidBlocks), too long to wait for the outer loop's clock.
+  template <class Out_of_time>
+  Inner_statistics minimize(Untangling_problem<d>& P, double eps, double theta, int max_iterations,
+                            const Out_of_time& out_of_time) const
   {
+    struct Time_is_up {};   // not a std::exception: only the handler below catches it
     Inner_statistics stats;
     // LBFGSpp moves x in place and may throw from inside a line search:
     // remember the best point seen so that a failed search loses nothing.
     Eigen::VectorXd best = Eigen::Map<Eigen::VectorXd>(P.x.data(), P.x.size());
     double best_value = std::numeric_limits<double>::infinity();
     auto F = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+      if(out_of_time()) throw Time_is_up();
       ++stats.evaluations;
       const double value = energy<d>(P, x.data(), eps, theta, g.data());
       if(!std::isfinite(value) || !g.allFinite()) {
@@ -95,6 +102,8 @@ public:
     double fx = 0;
     try {
       stats.iterations = static_cast<std::size_t>(solver.minimize(F, x, fx));
+    } catch(const Time_is_up&) {
+      stats.iterations = stats.evaluations;   // the caller's clock tells it why
     } catch(const std::invalid_argument&) {
       throw;                                  // a bad parameter is a bug, not a hard problem
     } catch(const std::exception&) {

@@ -146,7 +146,7 @@ public:
       const bool valid = summary.min_det > 0;
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? 1e-6 : 1e-4)
-               : LBFGS_solver<d>().minimize(P, eps, theta_, inner_iterations(valid));
+               : LBFGS_solver<d>().minimize(P, eps, theta_, inner_iterations(valid), [this] { return out_of_time(); });
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
