@@ -18,7 +18,7 @@ namespace internal {
 
 /// Jacobian of element k for the positions x.
 template <int d>
-Eigen::Matrix<double, d, d> jacobian(const Untangling_problem<d>& P, const double* x, std::size_t k)
+EIGEN_ALWAYS_INLINE Eigen::Matrix<double, d, d> jacobian(const Untangling_problem<d>& P, const double* x, std::size_t k)
 {
   Eigen::Matrix<double, d, d + 1> X;
   for(int i = 0; i <= d; ++i)
