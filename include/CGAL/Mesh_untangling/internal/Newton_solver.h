@@ -85,27 +85,25 @@ template <int d>
 class Hessian_pattern
 {
 public:
-  explicit Hessian_pattern(const Untangling_problem<d>& P)
+  explicit Hessian_pattern(const Untangling_problem<d>& P) : free_(P.is_fixed)
   {
-    const Free_numbering free(P.is_fixed);
-    free_index_ = free.index;
-    number_of_free_ = free.count;
+    const int free_count = free_.count;
     // every diagonal block is stored, even that of a free vertex in no
     // element, so that the solver can shift the diagonal in place
-    const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
-    std::vector<int> column_start(number_of_free_ + 1, 0);   // per block column, into its blocks
-    for(int j = 0; j < number_of_free_; ++j)
+    const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free_);
+    std::vector<int> column_start(free_count + 1, 0);   // per block column, into its blocks
+    for(int j = 0; j < free_count; ++j)
       column_start[j + 1] = column_start[j] + static_cast<int>(rows[j].size());
 
     // scalar compressed-column structure: column J*d+c holds the blocks of block column J
-    const int N = d * number_of_free_;
+    const int N = d * free_count;
     matrix_.resize(N, N);
     std::vector<Eigen::Index> nnz(N);
-    for(int j = 0; j < number_of_free_; ++j)
+    for(int j = 0; j < free_count; ++j)
       for(int c = 0; c < d; ++c)
         nnz[d * j + c] = d * (column_start[j + 1] - column_start[j]);
     if(N > 0) matrix_.reserve(nnz);   // Eigen reads past an empty reserve list
-    for(int j = 0; j < number_of_free_; ++j)
+    for(int j = 0; j < free_count; ++j)
       for(int c = 0; c < d; ++c)
         for(int i : rows[j])
           for(int r = 0; r < d; ++r)
@@ -128,7 +126,7 @@ public:
       const auto& e = P.elements[k];
       for(int a = 0; a <= d; ++a)
         for(int b = 0; b <= d; ++b) {
-          const int i = free_index_[e[a]], j = free_index_[e[b]];
+          const int i = free_.index[e[a]], j = free_.index[e[b]];
           if(j < 0 || i < j) continue;   // fixed vertex, or upper triangle
           // the first scalar column of block column j lists its block rows, d entries each
           const auto first = outer[d * j], blocks = (outer[d * j + 1] - first) / d;
@@ -145,8 +143,8 @@ public:
     }
   }
 
-  int number_of_free() const { return number_of_free_; }
-  int free_index(std::size_t v) const { return free_index_[v]; }
+  int number_of_free() const { return free_.count; }
+  int free_index(std::size_t v) const { return free_.index[v]; }
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
@@ -181,8 +179,7 @@ private:
     int stride = 0;    // from one column of the block to the next
   };
 
-  std::vector<int> free_index_;
-  int number_of_free_ = 0;
+  Free_numbering free_;
   std::vector<Target> targets_;     // per element (in colour order) and (a, b)
   Eigen::SparseMatrix<double> matrix_;
 };
