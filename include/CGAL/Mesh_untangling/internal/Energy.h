@@ -90,7 +90,7 @@ double energy(const Untangling_problem<d>& P, const double* x, double eps, doubl
   if(gradient == nullptr)
     return coloured_sum(P, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x, k)); });
 
-  std::fill(gradient, gradient + d * P.number_of_vertices, 0.);
+  parallel_fill(gradient, d * P.number_of_vertices, 0.);
   return coloured_sum(P, [&](std::size_t k) {
     Eigen::Matrix<double, d, d> dfdJ;
     const double value = f.value_and_gradient(jacobian(P, x, k), dfdJ);

@@ -81,12 +81,13 @@ public:
       if(out_of_time()) throw Time_is_up();
       ++stats.evaluations;
       const double value = energy<d>(P, x.data(), eps, theta, g.data());
-      if(!std::isfinite(value) || !g.allFinite()) {
+      // (vectors of a million entries: the copy and the scan in parallel too)
+      if(!std::isfinite(value) || !all_finite(g.data(), g.size())) {
         stats.finite = false;   // reported; the line search sees a wall
         g.setZero();
         return std::numeric_limits<double>::max();
       }
-      if(value < best_value) { best_value = value; best = x; }
+      if(value < best_value) { best_value = value; parallel_copy(x.data(), x.size(), best.data()); }
       return value;
     };
     LBFGSpp::LBFGSParam<double> param;

@@ -198,13 +198,19 @@ double predicted_factorization_flops(const Untangling_problem<d>& P)
   const Free_numbering free(P.is_fixed);
   if(free.count == 0) return 0;
   const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
+  // the compressed columns written directly: each column's rows are sorted already
   Eigen::SparseMatrix<double> graph(free.count, free.count);
-  std::vector<Eigen::Index> sizes(free.count);
-  for(int j = 0; j < free.count; ++j) sizes[j] = static_cast<Eigen::Index>(rows[j].size());
-  graph.reserve(sizes);
-  for(int j = 0; j < free.count; ++j)
-    for(int i : rows[j]) graph.insert(i, j) = 1;
   graph.makeCompressed();
+  auto* start = graph.outerIndexPtr();
+  start[0] = 0;
+  for(int j = 0; j < free.count; ++j) start[j + 1] = start[j] + static_cast<int>(rows[j].size());
+  graph.resizeNonZeros(start[free.count]);
+  for_each_vertex_chunk(free.count, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t j = first; j < last; ++j) {
+      std::copy(rows[j].begin(), rows[j].end(), graph.innerIndexPtr() + start[j]);
+      std::fill(graph.valuePtr() + start[j], graph.valuePtr() + start[j + 1], 1.);
+    }
+  });
   Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> analysis;
   cholmod_common& c = analysis.cholmod();
   c.nmethods = 1;

@@ -180,8 +180,7 @@ template <int d>
 bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
   const std::size_t n = in.number_of_mesh_vertices();
-  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + in.number_of_mesh_elements());
-  const std::vector<char> on_boundary = boundary_vertices<d>(n, mesh);
+  const std::vector<char> on_boundary = boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
   return false;
@@ -291,9 +290,10 @@ void sort_elements_by_colour(Untangling_problem<d>& P)
     order.insert(order.end(), part.begin(), part.end());
   }
   auto permute = [&order](auto& values) {
-    std::remove_reference_t<decltype(values)> sorted;
-    sorted.reserve(values.size());
-    for(std::size_t k : order) sorted.push_back(values[k]);
+    std::remove_reference_t<decltype(values)> sorted(values.size());
+    for_each_chunk(order.size(), element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i) sorted[i] = values[order[i]];
+    });
     values.swap(sorted);
   };
   permute(P.elements);
@@ -322,43 +322,56 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
   P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
 
+  // Element by element in parallel chunks; every sum below runs serially in
+  // element order over the values they leave, so the problem (its scale,
+  // weights, hence the result) has the same bits for any number of threads.
+
   // Normalize the map: centred on its bounding box, unit largest extent.
   Vector lo = in.positions[0], hi = lo;
   for(const auto& p : in.positions) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
   P.center = (lo + hi) / 2;
   P.scale = (hi - lo).maxCoeff() > 0 ? (hi - lo).maxCoeff() : 1.;
   P.x.resize(d * n);
-  for(std::size_t v = 0; v < n; ++v)
-    Eigen::Map<Vector>(&P.x[d * v]) = (in.positions[v] - P.center) / P.scale;
+  for_each_chunk(n, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t v = first; v < last; ++v)
+      Eigen::Map<Vector>(&P.x[d * v]) = (in.positions[v] - P.center) / P.scale;
+  });
 
   // Targets: orientation, degenerate ones replaced by regular ones of the mean size.
   std::vector<Target> targets(m);
   P.reference_orientation.assign(m, 1);
   std::vector<char> degenerate(m, 0);
-  double total = 0;
-  int majority = 0;
+  std::vector<double> volume(m);
   // Without targets, regular simplices take the orientation of most of the map.
   const bool map_is_negative = in.targets.empty() && map_volume_sign<d>(in) < 0;
-  for(std::size_t k = 0; k < m; ++k) {
-    targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
-    if(map_is_negative) std::swap(targets[k][0], targets[k][1]);
-    const double vol = simplex_volume<d>(targets[k]);
-    degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
-    if(!degenerate[k]) { total += std::abs(vol); majority += vol > 0 ? 1 : -1; }
-  }
-  const std::size_t good = m - std::count(degenerate.begin(), degenerate.end(), 1);
-  const double mean_volume = good > 0 ? total / good : 1.;
-  for(std::size_t k = 0; k < m; ++k) {
-    if(degenerate[k]) {
-      // keep the orientation the rest element has, if it has one
-      const double vol = in.targets.empty() ? 1. : simplex_volume<d>(in.targets[k]);
-      targets[k] = regular_simplex<d>();
-      for(auto& p : targets[k]) p *= std::pow(mean_volume, 1. / d);
-      if(vol < 0 || (vol == 0 && majority < 0)) std::swap(targets[k][0], targets[k][1]);
-      ++P.degenerate_targets_replaced;
+  for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k) {
+      targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
+      if(map_is_negative) std::swap(targets[k][0], targets[k][1]);
+      volume[k] = simplex_volume<d>(targets[k]);
+      degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
     }
-    P.reference_orientation[k] = simplex_volume<d>(targets[k]) > 0 ? 1 : -1;
-  }
+  });
+  double total = 0;
+  int majority = 0;
+  for(std::size_t k = 0; k < m; ++k)
+    if(!degenerate[k]) { total += std::abs(volume[k]); majority += volume[k] > 0 ? 1 : -1; }
+  const std::size_t good = m - std::count(degenerate.begin(), degenerate.end(), 1);
+  P.degenerate_targets_replaced = m - good;
+  const double mean_volume = good > 0 ? total / good : 1.;
+  const double regular_size = std::pow(mean_volume, 1. / d);
+  for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k) {
+      if(degenerate[k]) {
+        // keep the orientation the rest element has, if it has one
+        const double vol = in.targets.empty() ? 1. : simplex_volume<d>(in.targets[k]);
+        targets[k] = regular_simplex<d>();
+        for(auto& p : targets[k]) p *= regular_size;
+        if(vol < 0 || (vol == 0 && majority < 0)) std::swap(targets[k][0], targets[k][1]);
+      }
+      P.reference_orientation[k] = simplex_volume<d>(targets[k]) > 0 ? 1 : -1;
+    }
+  });
 
   // Target scale.
   const bool given = !in.targets.empty();
@@ -366,43 +379,67 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     scaling = (!given || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME : Target_scaling::AS_GIVEN;
   double target_factor = 1. / P.scale;     // AS_GIVEN: same units as the map
   if(scaling == Target_scaling::MATCH_MAP_VOLUME) {
-    double signed_volume = 0, absolute_volume = 0, target_volume = 0;
+    std::vector<double>& image_volume = volume;   // (the target volumes are read no more)
+    std::vector<double> target_volume(mesh_m);
+    for_each_chunk(mesh_m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k) {
+        Target image;
+        for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
+        image_volume[k] = simplex_volume<d>(image) * P.reference_orientation[k];
+        target_volume[k] = std::abs(simplex_volume<d>(targets[k]));
+      }
+    });
+    double signed_sum = 0, absolute_sum = 0, target_sum = 0;
     for(std::size_t k = 0; k < mesh_m; ++k) {
-      Target image;
-      for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
-      const double v = simplex_volume<d>(image) * P.reference_orientation[k];
-      signed_volume += v;
-      absolute_volume += std::abs(v);
-      target_volume += std::abs(simplex_volume<d>(targets[k]));
+      signed_sum += image_volume[k];
+      absolute_sum += std::abs(image_volume[k]);
+      target_sum += target_volume[k];
     }
-    const double wanted = signed_volume > 1e-3 * absolute_volume ? signed_volume : absolute_volume;
-    target_factor = wanted > 0 ? std::pow(wanted / target_volume, 1. / d) : 1.;
+    const double wanted = signed_sum > 1e-3 * absolute_sum ? signed_sum : absolute_sum;
+    target_factor = wanted > 0 ? std::pow(wanted / target_sum, 1. / d) : 1.;
   }
 
-  // Elements with positive targets, gradient operators, weights.
-  double weight_sum = 0;
+  // Elements with positive targets, gradient operators, weights; those with
+  // fixed vertices only are left out, the others keep their order.
+  std::vector<std::size_t> kept(m + 1, 0);   // kept[k]: elements kept before k
   for(std::size_t k = 0; k < m; ++k) {
-    auto e = in.elements[k];
-    Target t = targets[k];
-    for(auto& p : t) p *= target_factor;
-    if(P.reference_orientation[k] < 0) { std::swap(e[0], e[1]); std::swap(t[0], t[1]); }
     bool all_fixed = true;
-    for(std::size_t v : e) all_fixed = all_fixed && P.is_fixed[v];
-    if(all_fixed) { ++P.constant_elements; continue; }
-    Eigen::Matrix<double, d, d> E;
-    for(int i = 0; i < d; ++i) E.col(i) = t[i + 1] - t[0];
-    const Eigen::Matrix<double, d, d> Einv = E.inverse();
-    typename Untangling_problem<d>::Gradient_operator G;
-    G.template bottomRows<d>() = Einv;
-    G.row(0) = -Einv.colwise().sum();
-    if(k < mesh_m) ++P.mesh_elements;
-    P.elements.push_back(e);
-    P.input_index.push_back(k);
-    P.gradient_operators.push_back(G);
-    P.weights.push_back(E.determinant() / (d == 2 ? 2. : 6.));
-    weight_sum += P.weights.back();
+    for(std::size_t v : in.elements[k]) all_fixed = all_fixed && P.is_fixed[v];
+    kept[k + 1] = kept[k] + (all_fixed ? 0 : 1);
   }
+  const std::size_t kept_count = kept[m];
+  P.constant_elements = m - kept_count;
+  P.mesh_elements = kept[mesh_m];
+  P.elements.resize(kept_count);
+  P.input_index.resize(kept_count);
+  P.gradient_operators.resize(kept_count);
+  P.weights.resize(kept_count);
+  for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k) {
+      if(kept[k + 1] == kept[k]) continue;
+      const std::size_t i = kept[k];
+      auto e = in.elements[k];
+      Target t = targets[k];
+      for(auto& p : t) p *= target_factor;
+      if(P.reference_orientation[k] < 0) { std::swap(e[0], e[1]); std::swap(t[0], t[1]); }
+      Eigen::Matrix<double, d, d> E;
+      for(int c = 0; c < d; ++c) E.col(c) = t[c + 1] - t[0];
+      const Eigen::Matrix<double, d, d> Einv = E.inverse();
+      typename Untangling_problem<d>::Gradient_operator& G = P.gradient_operators[i];
+      G.template bottomRows<d>() = Einv;
+      G.row(0) = -Einv.colwise().sum();
+      P.elements[i] = e;
+      P.input_index[i] = k;
+      P.weights[i] = E.determinant() / (d == 2 ? 2. : 6.);
+    }
+  });
+  double weight_sum = 0;
+  for(double w : P.weights) weight_sum += w;
   for(double& w : P.weights) w /= weight_sum;
+  // the colouring's own arrays reach the peak memory of a large run
+  std::vector<Target>().swap(targets);
+  std::vector<double>().swap(volume);
+  std::vector<std::size_t>().swap(kept);
   sort_elements_by_colour(P);
   return P;
 }

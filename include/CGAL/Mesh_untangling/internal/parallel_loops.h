@@ -15,6 +15,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -41,6 +42,37 @@ void for_each_chunk(std::size_t n, std::size_t size, Body&& body)
   }
 #endif
   for(std::size_t c = 0; c < chunks; ++c) body(c, c * size, std::min(n, (c + 1) * size));
+}
+
+/// Entries per chunk of a plain vector loop (copy, fill, scan): a few
+/// pages, so that a million-vertex vector is split among the threads.
+constexpr std::size_t vector_chunk_size = std::size_t(1) << 14;
+
+/// to[i] = from[i] for i in [0, n).
+inline void parallel_copy(const double* from, std::size_t n, double* to)
+{
+  for_each_chunk(n, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::copy(from + begin, from + end, to + begin);
+  });
+}
+
+/// values[i] = value for i in [0, n).
+inline void parallel_fill(double* values, std::size_t n, double value)
+{
+  for_each_chunk(n, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::fill(values + begin, values + end, value);
+  });
+}
+
+/// Whether every values[i], i in [0, n), is finite.
+inline bool all_finite(const double* values, std::size_t n)
+{
+  std::vector<char> finite((n + vector_chunk_size - 1) / vector_chunk_size, 1);
+  for_each_chunk(n, vector_chunk_size, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i)
+      if(!std::isfinite(values[i])) { finite[chunk] = 0; return; }
+  });
+  return std::find(finite.begin(), finite.end(), 0) == finite.end();
 }
 
 } // namespace internal

@@ -32,20 +32,23 @@ struct Vertex_stars
   std::size_t end(std::size_t v) const { return offsets[v + 1]; }
 };
 
+/// The stars of the first `number_of_simplices` simplices (all by default).
 template <std::size_t N>
 Vertex_stars build_vertex_stars(std::size_t number_of_vertices,
-                                const std::vector<std::array<std::size_t, N>>& simplices)
+                                const std::vector<std::array<std::size_t, N>>& simplices,
+                                std::size_t number_of_simplices = std::size_t(-1))
 {
+  const std::size_t m = std::min(number_of_simplices, simplices.size());
   Vertex_stars stars;
   stars.offsets.assign(number_of_vertices + 1, 0);
-  for(const auto& s : simplices)
-    for(std::size_t v : s)
+  for(std::size_t i = 0; i < m; ++i)
+    for(std::size_t v : simplices[i])
       ++stars.offsets[v + 1];
   for(std::size_t v = 0; v < number_of_vertices; ++v)
     stars.offsets[v + 1] += stars.offsets[v];
   stars.elements.resize(stars.offsets.back());
   std::vector<std::size_t> fill(stars.offsets.begin(), stars.offsets.end() - 1);
-  for(std::size_t i = 0; i < simplices.size(); ++i)
+  for(std::size_t i = 0; i < m; ++i)
     for(std::size_t v : simplices[i])
       stars.elements[fill[v]++] = i;
   return stars;
@@ -64,11 +67,13 @@ inline std::size_t number_of_vertex_chunks(std::size_t n)
 /// Vertices of the facets that belong to exactly one element.  A facet is
 /// looked for in the star of its smallest vertex only, which holds every
 /// element it belongs to.
+/// Only the first `number_of_elements` elements count (all by default).
 template <int d>
-std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements)
+std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements,
+                                    std::size_t number_of_elements = std::size_t(-1))
 {
   using Facet = std::array<std::size_t, d>;
-  const Vertex_stars stars = build_vertex_stars(n, elements);
+  const Vertex_stars stars = build_vertex_stars(n, elements, number_of_elements);
   std::vector<std::vector<Facet>> boundary_facets(number_of_vertex_chunks(n));
   for_each_vertex_chunk(n, [&](std::size_t chunk, std::size_t first, std::size_t last) {
     std::vector<Facet> facets;
