@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <limits>
 #include <random>
+#include <vector>
 
 using namespace CGAL::Mesh_untangling::internal;
 
@@ -334,6 +335,88 @@ void check_assembly(std::mt19937& random, int n)
 #endif
 }
 
+/// The first root of a polynomial in (0, limit]: simple roots, a root the
+/// polynomial only touches, a dip below zero between two positive ends, no
+/// root, degrees 1 to 3.  What it returns is positive for the polynomial and
+/// within 1e-7 of the root (a triple root: as close as doubles can tell).
+void check_first_positive_root()
+{
+  struct Case { std::vector<double> c; double limit, root, tolerance = 1e-7; };
+  const double none = std::numeric_limits<double>::infinity();
+  const std::vector<Case> cases = {
+    {{0.6, -1.7, -1.3, 1}, 1, 0.3},       // (0.3 - t)(2 - t)(1 + t)
+    {{0.6, -1.7, -1.3, 1}, 0.2, none},    // the same, looked for before its root
+    {{0.24, -1, 1}, 1, 0.4},              // (t - 0.4)(t - 0.6): positive again at t = 1
+    {{0.25, -1, 1}, 1, 0.5},              // (t - 0.5)^2: touches zero only
+    {{1, 1, 1}, 1, none},                 // no real root
+    {{1, -4}, 1, 0.25},                   // degree 1
+    {{1, -3, 3, -1}, 2, 1, 1e-5},         // (1 - t)^3: flat, its value vanishes 5e-6 before
+    {{2e-3, 0, 0, -1}, 1, std::cbrt(2e-3)} // a flat start
+  };
+  for(const Case& k : cases) {
+    const double t = first_positive_root(k.c.data(), int(k.c.size()), k.limit);
+    double value = 0;
+    for(std::size_t i = k.c.size(); i-- > 0;) value = value * t + k.c[i];
+    if(std::isinf(k.root)) {
+      CHECK_MESSAGE(std::isinf(t), "expected no root, found " << t);
+    } else {
+      CHECK_MESSAGE(std::abs(t - k.root) <= k.tolerance && t <= k.root && value > 0,
+                    "root " << k.root << " found at " << t << " (value " << value << ")");
+    }
+  }
+}
+
+/// The step bound of the Newton solver's line search on a valid perturbed
+/// grid moved along a random direction: no element turns over up to the
+/// bound, one does just past it; the same bits with 1 and 2 threads; no bound
+/// from a tangled map.
+template <int d>
+void check_step_bound(std::mt19937& random, int n)
+{
+  // the grid itself as targets: its elements are of either orientation
+  const Untangling_input<d> grid = perturbed_grid_input<d>(n, 0., random);
+  Untangling_input<d> in = perturbed_grid_input<d>(n, 0.1, random);
+  for(const auto& e : in.elements) {
+    typename Untangling_input<d>::Target t;
+    for(int i = 0; i <= d; ++i) t[i] = grid.positions[e[i]];
+    in.targets.push_back(t);
+  }
+  Untangling_problem<d> P = make_untangling_problem<d>(in);
+  CHECK(determinant_summary(P, P.x.data()).non_positive == 0);
+  std::normal_distribution<double> normal(0, 1. / n);
+  std::vector<double> dx(P.x.size(), 0.);
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(!P.is_fixed[v])
+      for(int c = 0; c < d; ++c) dx[d * v + c] = normal(random);
+  const double bound = step_keeping_orientation(P, P.x.data(), dx.data(), 1.);
+  std::cout << "d=" << d << ": step bound " << bound << "\n";
+  CHECK(bound > 0 && bound < 1);
+  auto non_positive_at = [&](double t) {
+    std::vector<double> y(P.x);
+    for(std::size_t i = 0; i < y.size(); ++i) y[i] += t * dx[i];
+    return determinant_summary(P, y.data()).non_positive;
+  };
+  for(double share : {0.25, 0.5, 0.9, 1.})
+    CHECK_MESSAGE(non_positive_at(share * bound) == 0, "d=" << d << ": an element turned over at " << share << " of the bound");
+  CHECK_MESSAGE(non_positive_at(bound + 1e-6) > 0, "d=" << d << ": no element turned over just past the bound");
+  // a shorter limit than the first root: no bound
+  CHECK(std::isinf(step_keeping_orientation(P, P.x.data(), dx.data(), bound / 2)));
+#ifdef CGAL_LINKED_WITH_TBB
+  for(int threads : {2, 1}) {
+    tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
+    CHECK(step_keeping_orientation(P, P.x.data(), dx.data(), 1.) == bound);
+  }
+#endif
+  // a tangled map: elements may have to turn over, no bound
+  const std::size_t v = P.elements[0][0] , w = P.elements[0][1];
+  const std::size_t moved = P.is_fixed[v] ? w : v;
+  for(int c = 0; c < d; ++c) P.x[d * moved + c] += 3. / n;
+  if(determinant_summary(P, P.x.data()).non_positive > 0)
+    CHECK(std::isinf(step_keeping_orientation(P, P.x.data(), dx.data(), 1.)));
+  else
+    CHECK_MESSAGE(false, "d=" << d << ": the moved vertex inverted no element");
+}
+
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
 /// The factorization cost predicted from the vertex graph (what
 /// Solver::AUTOMATIC decides on first) against CHOLMOD's analysis of the
@@ -361,6 +444,9 @@ int main()
   check_assembly<3>(random, 12);
   check_colouring<2>(random, 20);
   check_colouring<3>(random, 6);
+  check_first_positive_root();
+  check_step_bound<2>(random, 20);
+  check_step_bound<3>(random, 6);
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
   check_prediction<2>(random, 60);
   check_prediction<3>(random, 14);

@@ -385,8 +385,8 @@ struct Simplex_energy
           block(2, 0) += t(1); block(0, 2) -= t(1);
         }
       }
-    if(!is_positive_definite(unprojected_hessian(J, A)))   // else nothing to clamp, no SVD needed
-      for_each_eigenpair(J, A, [&](double lambda, const Jacobian& E) {
+    // (no Cholesky test of d2F/dJ2 first: it fails on nine elements in ten)
+    for_each_eigenpair(J, A, [&](double lambda, const Jacobian& E) {
         const Vertex_matrix EG = E * G.transpose();
         const Eigen::Map<const Vertex_vector> e(EG.data());
         const Vertex_vector scaled = (-weight * lambda) * e;
