@@ -219,7 +219,7 @@ private:
   {
     if(options_.max_inner_iterations >= 0) return options_.max_inner_iterations;
     if(solver_ == Solver::LBFGS) return published_inner_iterations<d>();
-    return valid ? 50 : 6;
+    return valid ? 100 : 6;
   }
 
   const Untangling_options& options_;

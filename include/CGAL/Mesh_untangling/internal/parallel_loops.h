@@ -11,7 +11,9 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -42,6 +44,19 @@ void for_each_chunk(std::size_t n, std::size_t size, Body&& body)
   }
 #endif
   for(std::size_t c = 0; c < chunks; ++c) body(c, c * size, std::min(n, (c + 1) * size));
+}
+
+/// The threads the loops above may use now (1 without TBB).  Only for
+/// splitting work whose result does not depend on the split.
+inline std::size_t available_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  const std::size_t arena = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+  const std::size_t allowed = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  return std::max<std::size_t>(1, std::min(arena, allowed));
+#else
+  return 1;
+#endif
 }
 
 /// Entries per chunk of a plain vector loop (copy, fill, scan): a few

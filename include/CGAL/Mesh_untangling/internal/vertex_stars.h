@@ -38,19 +38,30 @@ Vertex_stars build_vertex_stars(std::size_t number_of_vertices,
                                 const std::vector<std::array<std::size_t, N>>& simplices,
                                 std::size_t number_of_simplices = std::size_t(-1))
 {
-  const std::size_t m = std::min(number_of_simplices, simplices.size());
+  const std::size_t n = number_of_vertices, m = std::min(number_of_simplices, simplices.size());
+  // A counting sort per range of vertices, one range per thread: each reads
+  // all simplices in order, so every star lists its simplices in increasing
+  // order however many ranges there are.
+  const std::size_t ranges = std::min(available_threads(), std::max<std::size_t>(1, n / vertex_chunk_size));
+  auto for_each_range = [&](auto&& body) {
+    for_each_chunk(ranges, 1, [&](std::size_t r, std::size_t, std::size_t) { body(r * n / ranges, (r + 1) * n / ranges); });
+  };
   Vertex_stars stars;
-  stars.offsets.assign(number_of_vertices + 1, 0);
-  for(std::size_t i = 0; i < m; ++i)
-    for(std::size_t v : simplices[i])
-      ++stars.offsets[v + 1];
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
+  stars.offsets.assign(n + 1, 0);
+  for_each_range([&](std::size_t first, std::size_t last) {
+    for(std::size_t i = 0; i < m; ++i)
+      for(std::size_t v : simplices[i])
+        if(v >= first && v < last) ++stars.offsets[v + 1];
+  });
+  for(std::size_t v = 0; v < n; ++v)
     stars.offsets[v + 1] += stars.offsets[v];
   stars.elements.resize(stars.offsets.back());
   std::vector<std::size_t> fill(stars.offsets.begin(), stars.offsets.end() - 1);
-  for(std::size_t i = 0; i < m; ++i)
-    for(std::size_t v : simplices[i])
-      stars.elements[fill[v]++] = i;
+  for_each_range([&](std::size_t first, std::size_t last) {
+    for(std::size_t i = 0; i < m; ++i)
+      for(std::size_t v : simplices[i])
+        if(v >= first && v < last) stars.elements[fill[v]++] = i;
+  });
   return stars;
 }
 
