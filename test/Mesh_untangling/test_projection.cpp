@@ -335,6 +335,54 @@ void check_assembly(std::mt19937& random, int n)
 #endif
 }
 
+/// The Newton solver keeps an element's Hessian while its Jacobian and
+/// determinant move by less than 3 %: after a tiny move of every vertex the
+/// assembled Hessian is the previous one bit for bit, while the gradient is
+/// the fresh one; a vertex moved by a cell gets its elements recomputed; a
+/// new eps recomputes everything (the same bits as a new solver).
+template <int d>
+void check_hessian_reuse(std::mt19937& random, int n)
+{
+  Untangling_problem<d> P = perturbed_grid<d>(n, 0.5, random);
+  const double theta = 1. / 128, eps = 1e-3;
+  Newton_solver<d> newton(P);
+  Eigen::VectorXd g(d * P.number_of_vertices), g_fresh = g;
+  g.resize(d * (P.number_of_vertices - P.number_of_fixed_vertices));
+  g_fresh.resize(g.size());
+  newton.assemble(P, eps, theta, g);
+  const Eigen::SparseMatrix<double> H0 = newton.hessian();
+  auto same = [](const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B) {
+    return A.nonZeros() == B.nonZeros() && std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr());
+  };
+
+  std::normal_distribution<double> normal(0, 1e-7 / n);
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(!P.is_fixed[v])
+      for(int c = 0; c < d; ++c) P.x[d * v + c] += normal(random);
+  newton.assemble(P, eps, theta, g);
+  Newton_solver<d> fresh(P);
+  fresh.assemble(P, eps, theta, g_fresh);
+  CHECK_MESSAGE(same(newton.hessian(), H0), "d=" << d << ": a tiny move recomputed element Hessians");
+  CHECK_MESSAGE(!same(fresh.hessian(), H0), "d=" << d << ": the tiny move changed no Hessian entry");
+  CHECK_MESSAGE(g == g_fresh, "d=" << d << ": the gradient was not recomputed");
+
+  std::size_t moved = 0;
+  while(P.is_fixed[moved]) ++moved;
+  P.x[d * moved] += 1. / n;
+  newton.assemble(P, eps, theta, g);
+  Newton_solver<d> fresh_moved(P);
+  fresh_moved.assemble(P, eps, theta, g_fresh);
+  const Eigen::SparseMatrix<double> difference = newton.hessian() - H0, difference_fresh = fresh_moved.hessian() - H0;
+  const int f = newton.free_index(moved);
+  CHECK_MESSAGE(difference.coeff(d * f, d * f) != 0 && difference.coeff(d * f, d * f) == difference_fresh.coeff(d * f, d * f),
+                "d=" << d << ": the moved vertex's diagonal block was not recomputed");
+
+  newton.assemble(P, 2 * eps, theta, g);
+  Newton_solver<d> fresh_eps(P);
+  fresh_eps.assemble(P, 2 * eps, theta, g_fresh);
+  CHECK_MESSAGE(same(newton.hessian(), fresh_eps.hessian()) && g == g_fresh, "d=" << d << ": a new eps reused Hessians");
+}
+
 /// The first root of a polynomial in (0, limit]: simple roots, a root the
 /// polynomial only touches, a dip below zero between two positive ends, no
 /// root, degrees 1 to 3.  What it returns is positive for the polynomial and
@@ -444,6 +492,8 @@ int main()
   check_assembly<3>(random, 12);
   check_colouring<2>(random, 20);
   check_colouring<3>(random, 6);
+  check_hessian_reuse<2>(random, 12);
+  check_hessian_reuse<3>(random, 5);
   check_first_positive_root();
   check_step_bound<2>(random, 20);
   check_step_bound<3>(random, 6);
