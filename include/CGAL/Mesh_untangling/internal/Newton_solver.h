@@ -402,13 +402,10 @@ public:
     if(N == 0) { stats.converged = true; return stats; }
     std::vector<double> trial(P.x.size()), further(P.x.size()), vertex_gradient(P.x.size()), vertex_direction(P.x.size());
     Eigen::VectorXd g(N), g_trial(N), direction(N), q(N);
+    // the step direction per vertex (zero on fixed ones), set at each step
     auto move = [&](double alpha, std::vector<double>& to) {
-      to = P.x;
-      for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
-        const int f = pattern_.free_index(v);
-        if(f >= 0)
-          for(int c = 0; c < d; ++c) to[d * v + c] += alpha * direction[d * f + c];
-      }
+      to.resize(P.x.size());
+      for(std::size_t i = 0; i < P.x.size(); ++i) to[i] = P.x[i] + alpha * vertex_direction[i];
     };
     auto energy_and_gradient = [&](const std::vector<double>& x, Eigen::VectorXd& free_gradient) {
       const double value = energy<d>(P, x.data(), eps, theta, vertex_gradient.data());
@@ -462,11 +459,9 @@ public:
       // steps, and halving back from there cost 4.4 energy passes
       // per step, two thirds of all passes (i02c: 3,715 passes, now 971).
       const bool refresh = ++since_factorization >= steps_per_factorization && !last;
-      std::fill(vertex_direction.begin(), vertex_direction.end(), 0.);
       for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
         const int f = pattern_.free_index(v);
-        if(f >= 0)
-          for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = direction[d * f + c];
+        for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
       }
       const double bound = step_keeping_orientation(P, P.x.data(), vertex_direction.data(), 1.);
       double alpha = std::min(1., step_fraction * bound), E_trial = E;
