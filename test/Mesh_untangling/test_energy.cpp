@@ -1,11 +1,13 @@
 // The energy of one simplex: gradient and Hessian against finite
-// differences, the regularized determinant, and the eps rule step by step.
+// differences, the regularized determinant, and the eps rule step by step;
+// the energy pass's SIMD lanes against the scalar formulas.
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 
 #include "test_common.h"
 
 #include <random>
+#include <set>
 
 using namespace CGAL::Mesh_untangling::internal;
 
@@ -70,6 +72,80 @@ void check_assembled_gradient(std::mt19937& random)
     const double fd = P.is_fixed[i / d] ? 0. : (fp - fm) / (2 * h);
     CHECK_MESSAGE(std::abs(fd - g[i]) <= 1e-5 * (1 + std::abs(fd)), "d=" << d << " coordinate " << i << ": " << g[i] << " vs " << fd);
   }
+}
+
+/// The energy pass runs the elements as lanes of SIMD arithmetic, with a
+/// short last group padded: its energy and gradient must have the same bits
+/// as the scalar formulas summed element by element (the Newton solver
+/// compares the two).  Random simplices over a small vertex pool, some
+/// degenerate (det J = 0) or inverted, at a large and a small eps.
+template <int d>
+void check_lanes_match_scalar(std::mt19937& random)
+{
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<std::size_t> pick(0, 29);
+  Untangling_input<d> in;
+  for(int v = 0; v < 30; ++v) in.positions.push_back(Eigen::Matrix<double, d, 1>::NullaryExpr([&] { return normal(random); }));
+  while(in.elements.size() < 8 * 5 + 3) {
+    std::array<std::size_t, d + 1> e;
+    for(auto& v : e) v = pick(random);
+    if(std::set<std::size_t>(e.begin(), e.end()).size() == d + 1) in.elements.push_back(e);
+  }
+  in.is_fixed.assign(in.positions.size(), false);
+  for(int v = 0; v < 30; v += 7) in.is_fixed[v] = true;
+  const auto P = make_untangling_problem<d>(in);
+  std::vector<double> x = P.x;
+  // a degenerate element: its first vertex onto its second (when both are free)
+  const auto& e0 = P.elements[P.elements.size() - 1];
+  if(!P.is_fixed[e0[0]] && !P.is_fixed[e0[1]])
+    for(int c = 0; c < d; ++c) x[d * e0[0] + c] = x[d * e0[1] + c];
+  int inverted = 0;
+  for(std::size_t k = 0; k < P.elements.size(); ++k) inverted += jacobian(P, x.data(), k).determinant() < 0;
+  CHECK(inverted > 0);
+  for(double eps : {0.05, 1e-7}) {
+    const Simplex_energy<d> f{0.3, eps};
+    std::vector<double> g(x.size()), g_scalar(x.size(), 0.);
+    const double F = energy<d>(P, x.data(), eps, 0.3, g.data()), F_value = energy<d>(P, x.data(), eps, 0.3);
+    const double F_scalar = coloured_sum(P, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x.data(), k)); });
+    for(std::size_t k = 0; k < P.elements.size(); ++k) {   // stored colour by colour: the pass's order
+      const auto J = jacobian(P, x.data(), k);
+      const auto A = f.partials(J, false);
+      Eigen::Matrix<double, d, d + 1> E;
+      vertex_gradient<d>(J.data(), A.C.data(), A.s, A.D, P.weights[k], P.gradient_operators[k].data(), E.data());
+      for(int i = 0; i <= d; ++i)
+        if(!P.is_fixed[P.elements[k][i]])
+          for(int c = 0; c < d; ++c) g_scalar[d * P.elements[k][i] + c] += E(c, i);
+    }
+    CHECK_MESSAGE(F == F_scalar && F_value == F_scalar, "d=" << d << " eps=" << eps << ": " << F << " " << F_value << " vs " << F_scalar);
+    CHECK_MESSAGE(std::isfinite(F), "d=" << d << " eps=" << eps << ": energy " << F);
+    CHECK_MESSAGE(g == g_scalar, "d=" << d << " eps=" << eps << ": the lanes' gradient differs from the scalar one");
+  }
+}
+
+/// chi^(-1/3) without division, against the library's cube root, over the
+/// whole range of doubles (subnormal and huge included).
+void check_inverse_cube_root()
+{
+  double worst = 0;
+  for(int exponent = -1074; exponent <= 1023; exponent += 3)
+    for(double mantissa : {1., 1.1, 1.26, 1.5, 1.587, 1.75, 1.99}) {
+      const double a = std::ldexp(mantissa, exponent);
+      if(!(a > 0) || !std::isfinite(a)) continue;
+      const double t = Simplex_energy<3>::inverse_cube_root(a), reference = 1 / std::cbrt(a);
+      worst = std::max(worst, std::abs(t - reference) / reference);
+    }
+  CHECK_MESSAGE(worst < 1e-15, "inverse cube root: relative error " << worst);
+  // lanes: a subnormal lane sends the group to the library's cube root, lane by lane
+  Lanes<8> a;
+  a << 1e-3, 2., 3e5, 7e-310, 0.125, 1e300, 5., 6.;
+  const Lanes<8> t = Simplex_energy<3>::inverse_cube_root(a);
+  for(int l = 0; l < 8; ++l) CHECK_MESSAGE(t[l] == Simplex_energy<3>::inverse_cube_root(a[l]), "lane " << l);
+  a[3] = 7e-3;
+  const Lanes<8> u = Simplex_energy<3>::inverse_cube_root(a);
+  for(int l = 0; l < 8; ++l) CHECK_MESSAGE(u[l] == Simplex_energy<3>::inverse_cube_root(a[l]), "lane " << l);
+  CHECK(Simplex_energy<3>::inverse_cube_root(8.) == 0.5);
+  CHECK(Simplex_energy<3>::inverse_cube_root(std::numeric_limits<double>::infinity()) == 0.);
+  CHECK(std::isnan(Simplex_energy<3>::inverse_cube_root(std::nan(""))));
 }
 
 void check_regularized_determinant()
@@ -138,6 +214,9 @@ int main()
   check_derivatives<3>(random, true);
   check_assembled_gradient<2>(random);
   check_assembled_gradient<3>(random);
+  check_lanes_match_scalar<2>(random);
+  check_lanes_match_scalar<3>(random);
+  check_inverse_cube_root();
   check_regularized_determinant();
   check_epsilon_rule();
   check_adaptive_epsilon();

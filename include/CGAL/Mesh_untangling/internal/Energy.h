@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -23,7 +24,9 @@ EIGEN_ALWAYS_INLINE Eigen::Matrix<double, d, d> jacobian(const Untangling_proble
   Eigen::Matrix<double, d, d + 1> X;
   for(int i = 0; i <= d; ++i)
     X.col(i) = Eigen::Map<const Eigen::Matrix<double, d, 1>>(x + d * P.elements[k][i]);
-  return X * P.gradient_operators[k];
+  Eigen::Matrix<double, d, d> J;
+  jacobian_from_vertices<d>(X.data(), P.gradient_operators[k].data(), J.data());
+  return J;
 }
 
 /// Smallest det J and the number of elements with det J <= 0 (floating
@@ -57,13 +60,14 @@ Determinant_summary<d> determinant_summary(const Untangling_problem<d>& P, const
   return s;
 }
 
-/// Sum of value(k) over the elements, colour by colour (see
-/// Untangling_problem::colour_start).  Within a colour, chunks of
-/// element_chunk_size run concurrently, so `value` may add into the entries
-/// of the free vertices of element k; the chunk sums are added in a fixed
-/// order.  Hence the same bits for any number of threads, and without TBB.
-template <int d, class Value>
-double coloured_sum(const Untangling_problem<d>& P, Value&& value)
+/// Sum over the elements, colour by colour (see Untangling_problem::colour_start):
+/// within a colour, chunks of element_chunk_size run concurrently and
+/// `chunk_sum(begin, end)` returns the sum over elements [begin, end), so it
+/// may add into the entries of their free vertices; the chunk sums are added
+/// in a fixed order.  Hence the same bits for any number of threads, and
+/// without TBB.
+template <int d, class Chunk_sum>
+double coloured_chunk_sum(const Untangling_problem<d>& P, Chunk_sum&& chunk_sum)
 {
   double sum = 0;
   std::vector<double> partial;
@@ -71,36 +75,90 @@ double coloured_sum(const Untangling_problem<d>& P, Value&& value)
     const std::size_t first = P.colour_start[colour], size = P.colour_start[colour + 1] - first;
     partial.assign((size + element_chunk_size - 1) / element_chunk_size, 0.);
     for_each_chunk(size, element_chunk_size, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-      double s = 0;
-      for(std::size_t k = first + begin; k < first + end; ++k) s += value(k);
-      partial[chunk] = s;
+      partial[chunk] = chunk_sum(first + begin, first + end);
     });
     for(double p : partial) sum += p;
   }
   return sum;
 }
 
+/// Sum of value(k) over the elements, added in element order within a chunk (see coloured_chunk_sum).
+template <int d, class Value>
+double coloured_sum(const Untangling_problem<d>& P, Value&& value)
+{
+  return coloured_chunk_sum(P, [&](std::size_t begin, std::size_t end) {
+    double s = 0;
+    for(std::size_t k = begin; k < end; ++k) s += value(k);
+    return s;
+  });
+}
+
+/// Elements per group in the energy pass: two SSE2 registers' worth, so
+/// that two independent chains of divisions and roots overlap.
+constexpr int energy_lanes = 8;
+
+/// Adds w_k f(J_k) for the elements [first, first + count), count <= W, to
+/// `sum` in element order and, when `gradient` is given, their gradients to
+/// their free vertices.  The elements are the lanes of W-wide arithmetic; a
+/// short group repeats its last element in the idle lanes.
+template <int d, int W>
+void add_element_group(const Untangling_problem<d>& P, const double* x, const Simplex_energy<d>& f,
+                       std::size_t first, int count, double& sum, double* gradient, std::size_t& non_positive)
+{
+  using L = Lanes<W>;
+  L X[d * (d + 1)], G[(d + 1) * d], w;
+  for(int l = 0; l < W; ++l) {
+    const std::size_t k = first + std::min(l, count - 1);
+    for(int i = 0; i <= d; ++i)
+      for(int row = 0; row < d; ++row) X[row + d * i][l] = x[d * P.elements[k][i] + row];
+    for(int j = 0; j < (d + 1) * d; ++j) G[j][l] = P.gradient_operators[k].data()[j];
+    w[l] = P.weights[k];
+  }
+  L J[d * d], C[d * d];
+  jacobian_from_vertices<d>(X, G, J);
+  const L D = determinant_and_cofactor<d>(J, C);
+  const auto A = f.first_partials(squared_norm<d>(J), D);
+  const L value = w * A.f;
+  for(int l = 0; l < count; ++l) {
+    sum += value[l];
+    if(!(D[l] > 0)) ++non_positive;
+  }
+  if(gradient == nullptr) return;
+
+  L E[d * (d + 1)];
+  vertex_gradient<d>(J, C, A.s, A.D, w, G, E);
+  for(int l = 0; l < count; ++l)
+    for(int i = 0; i <= d; ++i) {
+      const std::size_t v = P.elements[first + l][i];
+      if(P.is_fixed[v]) continue;
+      for(int row = 0; row < d; ++row) gradient[d * v + row] += E[row + d * i][l];
+    }
+}
+
 /// F(X, eps) = sum_k w_k f_eps(J_k) and its gradient (zero on fixed vertices).
 /// Each element adds its gradient straight into its free vertices, colour by
-/// colour (coloured_sum): no per-element buffer, no serial gather.
+/// colour (coloured_chunk_sum): no per-element buffer, no serial gather.
+/// The same bits as summing w_k f(J_k) element by element with Simplex_energy.
+/// `non_positive`, when given, receives the number of elements with det J <= 0
+/// (computed by the same formula as Simplex_energy::partials).
 template <int d>
-double energy(const Untangling_problem<d>& P, const double* x, double eps, double theta, double* gradient = nullptr)
+double energy(const Untangling_problem<d>& P, const double* x, double eps, double theta, double* gradient = nullptr,
+              std::size_t* non_positive = nullptr)
 {
   const Simplex_energy<d> f{theta, eps};
-  if(gradient == nullptr)
-    return coloured_sum(P, [&](std::size_t k) { return P.weights[k] * f.value(jacobian(P, x, k)); });
-
-  parallel_fill(gradient, d * P.number_of_vertices, 0.);
-  return coloured_sum(P, [&](std::size_t k) {
-    Eigen::Matrix<double, d, d> dfdJ;
-    const double value = f.value_and_gradient(jacobian(P, x, k), dfdJ);
-    const Eigen::Matrix<double, d, d + 1> element_gradient = P.weights[k] * dfdJ * P.gradient_operators[k].transpose();
-    for(int i = 0; i <= d; ++i) {
-      const std::size_t v = P.elements[k][i];
-      if(!P.is_fixed[v]) Eigen::Map<Eigen::Matrix<double, d, 1>>(gradient + d * v) += element_gradient.col(i);
-    }
-    return P.weights[k] * value;
+  if(gradient != nullptr) parallel_fill(gradient, d * P.number_of_vertices, 0.);
+  std::atomic<std::size_t> non_positive_elements{0};
+  const double F = coloured_chunk_sum(P, [&](std::size_t begin, std::size_t end) {
+    double sum = 0;
+    std::size_t chunk_non_positive = 0;
+    for(std::size_t k = begin; k < end; k += energy_lanes)
+      add_element_group<d, energy_lanes>(P, x, f, k, static_cast<int>(std::min<std::size_t>(energy_lanes, end - k)),
+                                         sum, gradient, chunk_non_positive);
+    if(chunk_non_positive > 0) non_positive_elements += chunk_non_positive;
+    return sum;
   });
+  if(non_positive != nullptr) *non_positive = non_positive_elements;
+  return F;
 }
 
 } // namespace internal

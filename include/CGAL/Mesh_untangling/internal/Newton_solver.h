@@ -26,6 +26,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -276,10 +277,11 @@ double step_keeping_orientation(const Untangling_problem<d>& P, const double* x,
     double t = std::numeric_limits<double>::infinity();
     for(std::size_t k = begin; k < end; ++k) {
       const Eigen::Matrix<double, d, d> J = jacobian(P, x, k), dJ = jacobian(P, dx, k);
+      Eigen::Matrix<double, d, d> C;
       double c[d + 1];
-      c[0] = J.determinant();
+      c[0] = determinant_and_cofactor<d>(J.data(), C.data());   // as the energy computes it
       if(!(c[0] > 0)) { t = -1; break; }
-      c[1] = Simplex_energy<d>::cofactor(J).cwiseProduct(dJ).sum();
+      c[1] = C.cwiseProduct(dJ).sum();
       if constexpr(d == 2) {
         c[2] = dJ.determinant();
       } else {
@@ -407,8 +409,12 @@ public:
       to.resize(P.x.size());
       for(std::size_t i = 0; i < P.x.size(); ++i) to[i] = P.x[i] + alpha * vertex_direction[i];
     };
-    auto energy_and_gradient = [&](const std::vector<double>& x, Eigen::VectorXd& free_gradient) {
-      const double value = energy<d>(P, x.data(), eps, theta, vertex_gradient.data());
+    // Elements with det J <= 0 at P.x and at the trial point, as the last
+    // energy evaluation there counted them: the step bound is only sought
+    // from a valid map, where it exists.
+    std::size_t non_positive = 0, non_positive_at_trial = 0;
+    auto energy_and_gradient = [&](const std::vector<double>& x, Eigen::VectorXd& free_gradient, std::size_t& tangled) {
+      const double value = energy<d>(P, x.data(), eps, theta, vertex_gradient.data(), &tangled);
       for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
         const int f = pattern_.free_index(v);
         if(f >= 0)
@@ -418,7 +424,7 @@ public:
     };
     Quasi_newton_pairs pairs;
 
-    double E = assemble(P, eps, theta, g);
+    double E = assemble(P, eps, theta, g, &non_positive);
     ++stats.evaluations;
     if(!std::isfinite(E)) { stats.finite = false; return stats; }
     if(!factorize()) { stats.finite = false; return stats; }
@@ -440,7 +446,7 @@ public:
       // boundary, are otherwise left visibly short).
       const bool last = predicted <= tolerance * std::abs(E) && since_factorization == 0;
       if(predicted <= tolerance * std::abs(E) && !last) {
-        E = assemble(P, eps, theta, g);
+        E = assemble(P, eps, theta, g, &non_positive);
         ++stats.evaluations;
         if(!std::isfinite(E) || !factorize()) { stats.finite = false; break; }
         pairs.clear();
@@ -463,7 +469,8 @@ public:
         const int f = pattern_.free_index(v);
         for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
       }
-      const double bound = step_keeping_orientation(P, P.x.data(), vertex_direction.data(), 1.);
+      const double bound = non_positive == 0 ? step_keeping_orientation(P, P.x.data(), vertex_direction.data(), 1.)
+                                             : std::numeric_limits<double>::infinity();
       double alpha = std::min(1., step_fraction * bound), E_trial = E;
       bool accepted = false, derivatives_at_trial = false;
       for(int ls = 0; ls < 40 && !accepted; ++ls) {
@@ -472,10 +479,10 @@ public:
         derivatives_at_trial = ls == 0 && !last;
         if(derivatives_at_trial && refresh) {
           P.x.swap(trial);
-          E_trial = assemble(P, eps, theta, g_trial);
+          E_trial = assemble(P, eps, theta, g_trial, &non_positive_at_trial);
           P.x.swap(trial);
         } else if(derivatives_at_trial) {
-          E_trial = energy_and_gradient(trial, g_trial);
+          E_trial = energy_and_gradient(trial, g_trial, non_positive_at_trial);
         } else {
           E_trial = energy<d>(P, trial.data(), eps, theta);
         }
@@ -503,7 +510,8 @@ public:
       if(last) { stats.converged = true; break; }
       const double decrease = E - E_trial;
       if(!derivatives_at_trial) {
-        E_trial = refresh ? assemble(P, eps, theta, g_trial) : energy_and_gradient(P.x, g_trial);
+        E_trial = refresh ? assemble(P, eps, theta, g_trial, &non_positive_at_trial)
+                          : energy_and_gradient(P.x, g_trial, non_positive_at_trial);
         ++stats.evaluations;
         if(!std::isfinite(E_trial)) { stats.finite = false; break; }
       }
@@ -515,6 +523,7 @@ public:
         pairs.add(alpha * direction, g_trial - g);
       }
       E = E_trial;
+      non_positive = non_positive_at_trial;
       g.swap(g_trial);
       if(decrease <= 1e-9 * std::abs(E)) { stats.converged = true; break; }
     }
@@ -532,8 +541,10 @@ public:
   /// add their gradient entries and Hessian blocks in place: no two share a
   /// free vertex, so no two write the same entry, and every entry receives
   /// its terms in colour order whatever the number of threads; the energy is
-  /// summed as `energy` sums it.  Both through coloured_sum.
-  double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g)
+  /// summed as `energy` sums it.  Both through coloured_sum.  `non_positive`,
+  /// when given, receives the number of elements with det J <= 0.
+  double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g,
+                  std::size_t* non_positive = nullptr)
   {
     pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
@@ -545,13 +556,15 @@ public:
       cache_eps_ = eps;
       cache_theta_ = theta;
     }
-    return coloured_sum(P, [&](std::size_t k) {
+    std::atomic<std::size_t> non_positive_elements{0};
+    const double F = coloured_sum(P, [&](std::size_t k) {
       const auto J = jacobian(P, P.x.data(), k);
       const auto A = f.partials(J, true);
+      if(!(A.det > 0)) ++non_positive_elements;
       const double w = P.weights[k];
       const auto& G = P.gradient_operators[k];
-      const Eigen::Matrix<double, d, d> dfdJ = 2 * A.s * J + A.D * A.C;
-      const Eigen::Matrix<double, d, d + 1> ge = w * dfdJ * G.transpose();
+      Eigen::Matrix<double, d, d + 1> ge;
+      vertex_gradient<d>(J.data(), A.C.data(), A.s, A.D, w, G.data(), ge.data());
       for(int a = 0; a <= d; ++a) {
         const int fa = pattern_.free_index(P.elements[k][a]);
         if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
@@ -562,7 +575,7 @@ public:
       // corrections and the exact gradient do the rest.  Projecting one costs
       // a signed SVD and a 3 x 3 eigen-solve, 20 energy passes for a mesh.
       Element_hessian& cached = cache_[k];
-      const double D = A.C.row(0).dot(J.row(0));
+      const double D = A.det;
       if(!(cached.valid && (J - cached.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * cached.J.squaredNorm()
            && std::abs(D - cached.D) <= reuse_tolerance * std::abs(cached.D))) {
         Simplex_energy<d>::vertex_hessian(J, A, G, w, cached.M);
@@ -580,6 +593,8 @@ public:
       }
       return w * A.f;
     });
+    if(non_positive != nullptr) *non_positive = non_positive_elements;
+    return F;
   }
 
 private:

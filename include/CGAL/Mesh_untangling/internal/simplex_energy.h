@@ -25,20 +25,115 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// W simplices at once, one per lane.  The energy pass runs the formulas
+/// below on lanes, which the compiler turns into SIMD instructions: the pass
+/// is bound by its divisions and square roots, not by memory.  Each formula
+/// is written once, generic in its scalar (double or Lanes), so that a lane
+/// gives the same bits as the scalar path the Newton solver takes.
+template <int W>
+using Lanes = Eigen::Array<double, W, 1>;
+
+inline double where_positive(double D, double if_positive, double otherwise)
+{
+  return D > 0 ? if_positive : otherwise;
+}
+
+template <int W>
+Lanes<W> where_positive(const Lanes<W>& D, const Lanes<W>& if_positive, const Lanes<W>& otherwise)
+{
+  return (D > 0).select(if_positive, otherwise);
+}
+
 /// chi(D, eps) and its first two derivatives in D.
+template <class T = double>
 struct Regularized_determinant
 {
-  double value, first, second;
+  T value, first, second;
 
-  Regularized_determinant(double D, double eps)
+  EIGEN_ALWAYS_INLINE Regularized_determinant(const T& D, double eps)
   {
-    const double r = std::sqrt(eps * eps + D * D);
-    // For D <= 0 the textbook form cancels catastrophically: use eps^2 / (2 (r - D)).
-    value = (D > 0) ? (D + r) / 2 : eps * eps / (2 * (r - D));
-    first = value / r;                  // (1 + D/r) / 2
+    using std::sqrt;
+    const T r = sqrt(eps * eps + D * D);
+    // (D + r) / 2, which for D <= 0 cancels catastrophically: there
+    // eps^2 / (2 (r - D)).  One division either way.
+    const T numerator = where_positive(D, T(D + r), T(T::Constant(eps * eps))),
+            denominator = where_positive(D, T(T::Constant(2.)), T(2 * (r - D)));
+    value = numerator / denominator;
+    first = numerator / (denominator * r);   // chi / r = (1 + D/r) / 2
     second = eps * eps / (2 * r * r * r);
   }
 };
+
+template <>
+EIGEN_ALWAYS_INLINE Regularized_determinant<double>::Regularized_determinant(const double& D, double eps)
+{
+  const double r = std::sqrt(eps * eps + D * D);
+  const double numerator = D > 0 ? D + r : eps * eps, denominator = D > 0 ? 2 : 2 * (r - D);
+  value = numerator / denominator;
+  first = numerator / (denominator * r);
+  second = eps * eps / (2 * r * r * r);
+}
+
+/// D = det J and its cofactor matrix C = dD/dJ, from the entries of J stored
+/// column by column (as Eigen stores them); D is expanded along the first row.
+template <int d, class T>
+EIGEN_ALWAYS_INLINE T determinant_and_cofactor(const T* J, T* C)
+{
+  auto j = [J](int row, int col) -> const T& { return J[row + d * col]; };
+  auto cofactor = [C](int row, int col) -> T& { return C[row + d * col]; };
+  if constexpr(d == 2) {
+    cofactor(0, 0) = j(1, 1);  cofactor(0, 1) = -j(1, 0);
+    cofactor(1, 0) = -j(0, 1); cofactor(1, 1) = j(0, 0);
+  } else {
+    // row r of C is the cross product of the next two rows of J
+    for(int row = 0; row < 3; ++row)
+      for(int col = 0; col < 3; ++col) {
+        const int a = (row + 1) % 3, b = (row + 2) % 3, p = (col + 1) % 3, q = (col + 2) % 3;
+        cofactor(row, col) = j(a, p) * j(b, q) - j(a, q) * j(b, p);
+      }
+  }
+  T D = j(0, 0) * cofactor(0, 0);
+  for(int col = 1; col < d; ++col) D += j(0, col) * cofactor(0, col);
+  return D;
+}
+
+/// |J|_F^2, entries added in storage order.
+template <int d, class T>
+EIGEN_ALWAYS_INLINE T squared_norm(const T* J)
+{
+  T s = J[0] * J[0];
+  for(int i = 1; i < d * d; ++i) s += J[i] * J[i];
+  return s;
+}
+
+/// J = X G from the vertex coordinates X (d x (d+1)) and the gradient
+/// operator G ((d+1) x d) of a simplex, all stored column by column; the
+/// terms are added in vertex order.
+template <int d, class T>
+EIGEN_ALWAYS_INLINE void jacobian_from_vertices(const T* X, const T* G, T* J)
+{
+  for(int col = 0; col < d; ++col)
+    for(int row = 0; row < d; ++row) {
+      T sum = X[row] * G[(d + 1) * col];
+      for(int i = 1; i <= d; ++i) sum += X[row + d * i] * G[i + (d + 1) * col];
+      J[row + d * col] = sum;
+    }
+}
+
+/// The gradient of w f in the vertex coordinates of a simplex (d x (d+1),
+/// column by column): w dF/dJ G^T, with dF/dJ = 2 A_s J + A_D C.
+template <int d, class T>
+EIGEN_ALWAYS_INLINE void vertex_gradient(const T* J, const T* C, const T& A_s, const T& A_D, const T& w, const T* G, T* E)
+{
+  T dFdJ[d * d];
+  for(int i = 0; i < d * d; ++i) dFdJ[i] = w * (2 * A_s * J[i] + A_D * C[i]);
+  for(int i = 0; i <= d; ++i)
+    for(int row = 0; row < d; ++row) {
+      T sum = dFdJ[row] * G[i];
+      for(int col = 1; col < d; ++col) sum += dFdJ[row + d * col] * G[i + (d + 1) * col];
+      E[row + d * i] = sum;
+    }
+}
 
 /// J = U diag(sigma) V^T with rotations U and V (det +1), |sigma| decreasing
 /// and the last sigma carrying the sign of det J ("signed SVD").  One-sided
@@ -165,34 +260,80 @@ void symmetric_eigen(const Eigen::Matrix<double, d, d>& S, Eigen::Matrix<double,
 template <int d>
 struct Simplex_energy
 {
-  /// a^(-2/d) for a > 0, without std::pow (the energy pass spent a fifth of
-  /// its time there, and still a tenth in std::cbrt)
-  static double inverse_power(double a)
+  /// chi^(-2/d) and 1/chi, for chi > 0
+  template <class T>
+  struct Reciprocal_powers
   {
+    T shape;     // chi^(-2/d)
+    T inverse;   // 1 / chi
+  };
+
+  /// In 3D without std::pow or a division (the energy pass spent a fifth of
+  /// its time in std::pow, then a third in a cube root with divisions):
+  /// t = chi^(-1/3), chi^(-2/3) = t^2 and 1/chi = t^3.
+  template <class T>
+  EIGEN_ALWAYS_INLINE static Reciprocal_powers<T> reciprocal_powers(const T& chi)
+  {
+    Reciprocal_powers<T> power;
     if constexpr(d == 2) {
-      return 1 / a;
+      power.inverse = 1 / chi;
+      power.shape = power.inverse;
     } else {
-      const double r = cube_root(a);
-      return 1 / (r * r);
+      const T t = inverse_cube_root(chi);
+      power.shape = t * t;
+      power.inverse = power.shape * t;
     }
+    return power;
   }
 
-  /// a^(1/3) for a > 0: a guess from the exponent bits (within a few %),
-  /// then three Halley steps (cubic convergence: below 1e-16 relative).
-  static double cube_root(double a)
+  /// a^(-1/3) for a > 0: a guess from the exponent bits (within 9 %), then
+  /// three steps of a third-order iteration without division (relative error
+  /// below 2e-16).
+  static double inverse_cube_root(double a)
   {
-    if(!(a >= std::numeric_limits<double>::min() && a <= std::numeric_limits<double>::max()))
-      return std::cbrt(a);   // subnormal, infinite or NaN: the library's care
+    if(!is_normal_positive(a))
+      return 1 / std::cbrt(a);   // subnormal, infinite or NaN: the library's care
+    double t = inverse_cube_root_guess(a);
+    polish_inverse_cube_root(t, a);
+    return t;
+  }
+
+  template <int W>
+  EIGEN_ALWAYS_INLINE static Lanes<W> inverse_cube_root(const Lanes<W>& a)
+  {
+    Lanes<W> t;
+    for(int l = 0; l < W; ++l) {
+      if(!is_normal_positive(a[l]))
+        return a.unaryExpr([](double v) { return inverse_cube_root(v); });
+      t[l] = inverse_cube_root_guess(a[l]);
+    }
+    polish_inverse_cube_root(t, a);
+    return t;
+  }
+
+  static bool is_normal_positive(double a)
+  {
+    return a >= std::numeric_limits<double>::min() && a <= std::numeric_limits<double>::max();
+  }
+
+  static double inverse_cube_root_guess(double a)
+  {
     std::uint64_t bits;
     std::memcpy(&bits, &a, sizeof a);
-    bits = (bits / 3) + (std::uint64_t(715094163) << 32);   // a third of the exponent (as in fdlibm's cbrt)
-    double r;
-    std::memcpy(&r, &bits, sizeof r);
+    bits = std::uint64_t(0x55402aaaaaaaaaaa) - bits / 3;   // minus a third of the exponent
+    double t;
+    std::memcpy(&t, &bits, sizeof t);
+    return t;
+  }
+
+  /// t <- t (1 - h)^(-1/3) to second order in h = 1 - a t^3: the error e becomes about 5 e^3.
+  template <class T>
+  EIGEN_ALWAYS_INLINE static void polish_inverse_cube_root(T& t, const T& a)
+  {
     for(int k = 0; k < 3; ++k) {
-      const double r3 = r * r * r;
-      r *= (r3 + 2 * a) / (2 * r3 + a);
+      const T h = 1 - a * t * t * t;
+      t += t * (h * (1. / 3 + h * (2. / 9)));
     }
-    return r;
   }
 
   using Jacobian = Eigen::Matrix<double, d, d>;
@@ -204,10 +345,9 @@ struct Simplex_energy
 
   double value(const Jacobian& J) const
   {
-    const double D = J.determinant();
-    const Regularized_determinant chi(D, eps);
-    return (1 - theta) * J.squaredNorm() / d * inverse_power(chi.value)
-         + theta * (1 + D * D) / (2 * chi.value);
+    Jacobian C;
+    const double D = determinant_and_cofactor<d>(J.data(), C.data());
+    return first_partials(squared_norm<d>(J.data()), D).f;
   }
 
   /// f and dF/dJ; when `hessian` is given, also d2F/dJ2 with its negative
@@ -223,34 +363,55 @@ struct Simplex_energy
   }
 
   /// f = A(s, D) with s = |J|_F^2 and D = det J, and the partial derivatives
-  /// of A its derivatives need (A_ss = 0): everything about f is isotropic.
-  struct Partials
+  /// of A the gradient needs: A_s, A_D, A_sD (everything about f is isotropic).
+  /// Generic in the scalar: double, or Lanes of simplices.
+  template <class T>
+  struct First_partials
   {
-    double f;
-    double s, D, sD, DD;   // A_s, A_D, A_sD, A_DD (A_DD only when asked for)
-    Jacobian C;            // cofactor matrix, dD/dJ
+    T f;
+    T s, D, sD;   // A_s, A_D, A_sD
+  };
+
+  template <class T>
+  EIGEN_ALWAYS_INLINE First_partials<T> first_partials(const T& s, const T& D) const
+  {
+    const Regularized_determinant<T> chi(D, eps);
+    const T& a1 = chi.first;
+    const double p = 2. / d;
+    const Reciprocal_powers<T> power = reciprocal_powers(chi.value);
+    const T& ap = power.shape;      // chi^(-2/d)
+    const T& inv_a = power.inverse;  // 1 / chi
+
+    // f = A(s, D) = shape(s, D) + size(D)
+    const double shape_weight = (1 - theta) / d;
+    First_partials<T> A;
+    A.s = shape_weight * ap;
+    A.sD = -shape_weight * p * ap * inv_a * a1;
+    const T size_D = theta * (D * inv_a - (1 + D * D) * a1 * (0.5 * inv_a * inv_a));
+    A.D = s * A.sD + size_D;
+    A.f = shape_weight * s * ap + theta * (1 + D * D) * (0.5 * inv_a);
+    return A;
+  }
+
+  /// The first partials, A_DD (A_ss = 0) and the cofactor matrix: all the Hessian needs.
+  struct Partials : First_partials<double>
+  {
+    double DD;       // A_DD (only when asked for)
+    double det;      // det J
+    Jacobian C;      // cofactor matrix, dD/dJ
   };
 
   Partials partials(const Jacobian& J, bool second_order) const
   {
     Partials A;
-    const double D = J.determinant();
-    A.C = cofactor(J);
-    const Regularized_determinant chi(D, eps);
-    const double s = J.squaredNorm();
-    const double a = chi.value, a1 = chi.first, a2 = chi.second;
-    const double p = 2. / d;
-    const double ap = inverse_power(a);  // chi^(-2/d)
-
-    // f = A(s, D) = shape(s, D) + size(D)
-    const double shape_weight = (1 - theta) / d;
-    A.s = shape_weight * ap;
-    A.sD = -shape_weight * p * ap / a * a1;
-    const double size_D = theta * (D / a - (1 + D * D) * a1 / (2 * a * a));
-    A.D = s * A.sD + size_D;
-    A.f = shape_weight * s * ap + theta * (1 + D * D) / (2 * a);
+    A.det = determinant_and_cofactor<d>(J.data(), A.C.data());
+    const double s = squared_norm<d>(J.data()), D = A.det;
+    static_cast<First_partials<double>&>(A) = first_partials(s, D);
     A.DD = 0;
     if(second_order) {
+      const Regularized_determinant chi(D, eps);
+      const double a = chi.value, a1 = chi.first, a2 = chi.second;
+      const double p = 2. / d, ap = reciprocal_powers(a).shape, shape_weight = (1 - theta) / d;
       const double size_DD = theta * (1 / a - 2 * D * a1 / (a * a) - (1 + D * D) * a2 / (2 * a * a)
                                       + (1 + D * D) * a1 * a1 / (a * a * a));
       A.DD = shape_weight * s * (p * (p + 1) * ap / (a * a) * a1 * a1 - p * ap / a * a2) + size_DD;
@@ -352,8 +513,6 @@ struct Simplex_energy
   /// y = 2 A_sD j~ + A_DD c~ / 2, and the (a, b) block of K^T (d2D/dJ2) K is
   /// the d x d matrix (r, s) -> eps_rst (J (g_a x g_b))_t in 3D,
   /// eps_rs det[g_a g_b] in 2D (g_a the rows of G, eps the Levi-Civita symbols).
-  /// When the unprojected d2F/dJ2 passes a Cholesky test there is nothing to
-  /// clamp and the SVD is skipped.
   static void vertex_hessian(const Jacobian& J, const Partials& A, const Gradient_operator& G, double weight,
                              Vertex_hessian& M)
   {
@@ -397,17 +556,9 @@ struct Simplex_energy
 
   static Jacobian cofactor(const Jacobian& J)
   {
-    if constexpr(d == 2) {
-      Jacobian C;
-      C << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
-      return C;
-    } else {
-      Jacobian C;
-      C.row(0) = J.row(1).cross(J.row(2));
-      C.row(1) = J.row(2).cross(J.row(0));
-      C.row(2) = J.row(0).cross(J.row(1));
-      return C;
-    }
+    Jacobian C;
+    determinant_and_cofactor<d>(J.data(), C.data());
+    return C;
   }
 
   /// Whether the Cholesky factorization of the symmetric matrix H (its lower
