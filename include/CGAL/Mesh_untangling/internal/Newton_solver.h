@@ -26,6 +26,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -578,19 +579,21 @@ public:
       const double D = A.det;
       if(!(cached.valid && (J - cached.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * cached.J.squaredNorm()
            && std::abs(D - cached.D) <= reuse_tolerance * std::abs(cached.D))) {
-        Simplex_energy<d>::vertex_hessian(J, A, G, w, cached.M);
+        typename Simplex_energy<d>::Vertex_hessian M;
+        Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
+        cached.pack(M);
         cached.J = J;
         cached.D = D;
         cached.valid = true;
       }
-      const typename Simplex_energy<d>::Vertex_hessian& M = cached.M;
-      for(int a = 0; a <= d; ++a) {
-        for(int b = 0; b < a; ++b)
-          pattern_.add(k, a, b, M.template block<d, d>(d * a, d * b));
-        Eigen::Matrix<double, d, d> diagonal = M.template block<d, d>(d * a, d * a);
-        diagonal.template triangularView<Eigen::StrictlyUpper>() = diagonal.transpose();
-        pattern_.add(k, a, a, diagonal);
-      }
+      Eigen::Matrix<double, d, d> block;
+      for(int a = 0; a <= d; ++a)
+        for(int b = 0; b <= a; ++b) {
+          for(int c = 0; c < d; ++c)
+            for(int r = 0; r < d; ++r)   // (a diagonal block mirrors its lower triangle)
+              block(r, c) = a > b || r >= c ? cached.entry(d * a + r, d * b + c) : cached.entry(d * a + c, d * b + r);
+          pattern_.add(k, a, b, block);
+        }
       return w * A.f;
     });
     if(non_positive != nullptr) *non_positive = non_positive_elements;
@@ -667,10 +670,21 @@ private:
   /// Where an element's Hessian was last computed, and that Hessian.
   struct Element_hessian
   {
+    static constexpr int n = d * (d + 1);
     Eigen::Matrix<double, d, d> J;
     double D = 0;
-    typename Simplex_energy<d>::Vertex_hessian M;
+    std::array<double, n * (n + 1) / 2> lower;   // of the vertex Hessian, column by column: all its users read
     bool valid = false;
+
+    void pack(const typename Simplex_energy<d>::Vertex_hessian& M)
+    {
+      double* entry = lower.data();
+      for(int col = 0; col < n; ++col)
+        for(int row = col; row < n; ++row) *entry++ = M(row, col);
+    }
+
+    /// (row, col) of the vertex Hessian, row >= col
+    double entry(int row, int col) const { return lower[col * (2 * n - col + 1) / 2 + row - col]; }
   };
   std::vector<Element_hessian> cache_;
   double cache_eps_ = -1, cache_theta_ = -1;
