@@ -278,17 +278,13 @@ double step_keeping_orientation(const Untangling_problem<d>& P, const double* x,
     double t = std::numeric_limits<double>::infinity();
     for(std::size_t k = begin; k < end; ++k) {
       const Eigen::Matrix<double, d, d> J = jacobian(P, x, k), dJ = jacobian(P, dx, k);
-      Eigen::Matrix<double, d, d> C;
+      Eigen::Matrix<double, d, d> C, dC;
       double c[d + 1];
       c[0] = determinant_and_cofactor<d>(J.data(), C.data());   // as the energy computes it
       if(!(c[0] > 0)) { t = -1; break; }
       c[1] = C.cwiseProduct(dJ).sum();
-      if constexpr(d == 2) {
-        c[2] = dJ.determinant();
-      } else {
-        c[2] = Simplex_energy<d>::cofactor(dJ).cwiseProduct(J).sum();
-        c[3] = dJ.determinant();
-      }
+      c[d] = determinant_and_cofactor<d>(dJ.data(), dC.data());
+      if constexpr(d == 3) c[2] = dC.cwiseProduct(J).sum();
       // An element turning over later than one already seen changes nothing;
       // most cannot turn over before: c[0] exceeds the other terms' bound.
       const double L = std::min(t, limit);

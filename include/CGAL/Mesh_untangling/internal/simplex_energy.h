@@ -27,7 +27,8 @@ namespace internal {
 
 /// W simplices at once, one per lane.  The energy pass runs the formulas
 /// below on lanes, which the compiler turns into SIMD instructions: the pass
-/// is bound by its divisions and square roots, not by memory.  Each formula
+/// is bound by its arithmetic and by gathering its elements, not by memory
+/// bandwidth.  Each formula
 /// is written once, generic in its scalar (double or Lanes), so that a lane
 /// gives the same bits as the scalar path the Newton solver takes.
 template <int W>
@@ -38,8 +39,9 @@ inline double where_positive(double D, double if_positive, double otherwise)
   return D > 0 ? if_positive : otherwise;
 }
 
-template <int W>
-Lanes<W> where_positive(const Lanes<W>& D, const Lanes<W>& if_positive, const Lanes<W>& otherwise)
+/// (either branch may also be a plain double, the same in every lane)
+template <int W, class If_positive, class Otherwise>
+Lanes<W> where_positive(const Lanes<W>& D, const If_positive& if_positive, const Otherwise& otherwise)
 {
   return (D > 0).select(if_positive, otherwise);
 }
@@ -56,23 +58,13 @@ struct Regularized_determinant
     const T r = sqrt(eps * eps + D * D);
     // (D + r) / 2, which for D <= 0 cancels catastrophically: there
     // eps^2 / (2 (r - D)).  One division either way.
-    const T numerator = where_positive(D, T(D + r), T(T::Constant(eps * eps))),
-            denominator = where_positive(D, T(T::Constant(2.)), T(2 * (r - D)));
+    const T numerator = where_positive(D, T(D + r), eps * eps),
+            denominator = where_positive(D, 2., T(2 * (r - D)));
     value = numerator / denominator;
     first = numerator / (denominator * r);   // chi / r = (1 + D/r) / 2
     second = eps * eps / (2 * r * r * r);
   }
 };
-
-template <>
-EIGEN_ALWAYS_INLINE Regularized_determinant<double>::Regularized_determinant(const double& D, double eps)
-{
-  const double r = std::sqrt(eps * eps + D * D);
-  const double numerator = D > 0 ? D + r : eps * eps, denominator = D > 0 ? 2 : 2 * (r - D);
-  value = numerator / denominator;
-  first = numerator / (denominator * r);
-  second = eps * eps / (2 * r * r * r);
-}
 
 /// D = det J and its cofactor matrix C = dD/dJ, from the entries of J stored
 /// column by column (as Eigen stores them); D is expanded along the first row.
@@ -552,13 +544,6 @@ struct Simplex_energy
         for(int col = 0; col < n; ++col)
           for(int row = col; row < n; ++row) M(row, col) += scaled(row) * e(col);
       }, true);
-  }
-
-  static Jacobian cofactor(const Jacobian& J)
-  {
-    Jacobian C;
-    determinant_and_cofactor<d>(J.data(), C.data());
-    return C;
   }
 
   /// Whether the Cholesky factorization of the symmetric matrix H (its lower
