@@ -265,10 +265,69 @@ inline double first_positive_root(const double* c, int n, double limit)
   return std::numeric_limits<double>::infinity();
 }
 
+/// The coefficients of det(J + t dJ) = c[0] + c[1] t + ... + c[d] t^d:
+/// det J, <cof J, dJ>, (3D: <J, cof dJ>) and det dJ.  Generic in the scalar
+/// (double, or Lanes of simplices).
+template <int d, class T>
+EIGEN_ALWAYS_INLINE void determinant_polynomial(const T* J, const T* dJ, T* c)
+{
+  T C[d * d], dC[d * d];
+  c[0] = determinant_and_cofactor<d>(J, C);   // as the energy computes it
+  c[d] = determinant_and_cofactor<d>(dJ, dC);
+  c[1] = C[0] * dJ[0];
+  for(int i = 1; i < d * d; ++i) c[1] += C[i] * dJ[i];
+  if constexpr(d == 3) {
+    c[2] = dC[0] * J[0];
+    for(int i = 1; i < d * d; ++i) c[2] += dC[i] * J[i];
+  }
+}
+
+/// The step bound (see step_keeping_orientation) over the elements
+/// [first, first + count), count <= W, the lanes of W-wide arithmetic (as
+/// in the energy pass, a short group repeats its last element), lowered
+/// from `t`; -1 when one of them is not positive at x.
+template <int d, int W>
+double group_step_bound(const Untangling_problem<d>& P, const double* x, const double* dx, std::size_t first,
+                        int count, double t, double limit)
+{
+  using L = Lanes<W>;
+  L X[d * (d + 1)], dX[d * (d + 1)], G[(d + 1) * d];
+  for(int l = 0; l < W; ++l) {
+    const std::size_t k = first + std::min(l, count - 1);
+    for(int i = 0; i <= d; ++i)
+      for(int row = 0; row < d; ++row) {
+        const std::size_t at = d * P.elements[k][i] + row;
+        X[row + d * i][l] = x[at];
+        dX[row + d * i][l] = dx[at];
+      }
+    for(int j = 0; j < (d + 1) * d; ++j) G[j][l] = P.gradient_operators[k].data()[j];
+  }
+  L J[d * d], dJ[d * d], c[d + 1];
+  jacobian_from_vertices<d>(X, G, J);
+  jacobian_from_vertices<d>(dX, G, dJ);
+  determinant_polynomial<d>(J, dJ, c);
+  if(!((c[0] > 0).all())) return -1;   // (the idle lanes repeat an element of the group)
+  // An element turning over later than one already seen changes nothing;
+  // most cannot turn over before: c[0] exceeds the other terms' bound.
+  L others = L::Zero();
+  const double L_max = std::min(t, limit);
+  for(int i = d; i > 0; --i) others = (others + c[i].abs()) * L_max;
+  if(!((others >= c[0]).any())) return t;
+  for(int l = 0; l < count; ++l) {
+    const double L_l = std::min(t, limit);
+    double coefficients[d + 1], o = 0;
+    for(int i = 0; i <= d; ++i) coefficients[i] = c[i][l];
+    for(int i = d; i > 0; --i) o = (o + std::abs(coefficients[i])) * L_l;
+    if(o >= coefficients[0]) t = std::min(t, first_positive_root(coefficients, d + 1, L_l));
+  }
+  return t;
+}
+
 /// The largest t <= limit such that no element turns over between x and
 /// x + t dx, when every element is positive at x (det J > 0); infinity
 /// otherwise (a tangled map may need elements to turn).  det J is a
-/// polynomial in t: det(J + t dJ) = det J + t <cof J, dJ> + t^2 <J, cof dJ> + t^3 det dJ.
+/// polynomial in t (determinant_polynomial), bounded in lanes of elements as
+/// the energy pass runs them, so that the bound costs less than a pass.
 template <int d>
 double step_keeping_orientation(const Untangling_problem<d>& P, const double* x, const double* dx, double limit)
 {
@@ -276,22 +335,9 @@ double step_keeping_orientation(const Untangling_problem<d>& P, const double* x,
   std::vector<double> partial((m + element_chunk_size - 1) / element_chunk_size);
   for_each_chunk(m, element_chunk_size, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
     double t = std::numeric_limits<double>::infinity();
-    for(std::size_t k = begin; k < end; ++k) {
-      const Eigen::Matrix<double, d, d> J = jacobian(P, x, k), dJ = jacobian(P, dx, k);
-      Eigen::Matrix<double, d, d> C, dC;
-      double c[d + 1];
-      c[0] = determinant_and_cofactor<d>(J.data(), C.data());   // as the energy computes it
-      if(!(c[0] > 0)) { t = -1; break; }
-      c[1] = C.cwiseProduct(dJ).sum();
-      c[d] = determinant_and_cofactor<d>(dJ.data(), dC.data());
-      if constexpr(d == 3) c[2] = dC.cwiseProduct(J).sum();
-      // An element turning over later than one already seen changes nothing;
-      // most cannot turn over before: c[0] exceeds the other terms' bound.
-      const double L = std::min(t, limit);
-      double others = 0;
-      for(int i = d; i > 0; --i) others = (others + std::abs(c[i])) * L;
-      if(others >= c[0]) t = std::min(t, first_positive_root(c, d + 1, L));
-    }
+    for(std::size_t k = begin; k < end && t >= 0; k += energy_lanes)
+      t = group_step_bound<d, energy_lanes>(P, x, dx, k, static_cast<int>(std::min<std::size_t>(energy_lanes, end - k)),
+                                            t, limit);
     partial[chunk] = t;
   });
   double t = std::numeric_limits<double>::infinity();
