@@ -299,8 +299,8 @@ Run_options run_options(const Arguments& args)
     options.progress = [](const MU::Untangling_step& s) {
       char motion[48] = "";
       if(s.motion < 1) std::snprintf(motion, sizeof motion, "  (continuation, motion %.4g)", s.motion);
-      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  %.2f s%s%s\n", s.step,
-                   s.epsilon, s.min_det, s.non_positive, s.energy, s.seconds,
+      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  (%zu iterations, %zu evaluations)  %.2f s%s%s\n",
+                   s.step, s.epsilon, s.min_det, s.non_positive, s.energy, s.inner_iterations, s.energy_evaluations, s.seconds,
                    s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "",
                    motion);
     };
