@@ -11,6 +11,8 @@
 
 #include "test_common.h"
 
+#include <CGAL/Mesh_untangling/Untangling_step.h>
+
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -74,6 +76,42 @@ void check_time_limit_inside_inner_solve(const std::string& data)
                 cut.energy_evaluations << " of " << whole.energy_evaluations << " evaluations");
 }
 
+/// On i13c_s6 the given targets hold elements inverted (stage 0 stalls);
+/// stage 1 untangles toward regular targets and must hand its first valid
+/// map to stage 2, which goes back to the given targets and keeps it valid.
+void check_stages_hand_over_at_first_valid_map(const std::string& data)
+{
+  Case_spec c;
+  for(const Case_spec& s : all_fixed_boundary(data))
+    if(s.name == "i13c_s6.hexex_block432") c = s;
+  CHECK(!c.name.empty());
+  if(c.name.empty()) return;
+  for(const std::string solver : {"newton", "lbfgs"}) {
+    Problem p = load(c);
+    std::vector<CGAL::Mesh_untangling::Untangling_step> steps;
+    Run_options options;
+    options.solver = solver;
+    options.progress = [&](const CGAL::Mesh_untangling::Untangling_step& s) { steps.push_back(s); };
+    const auto result = untangle_mesh_file(p.mesh, p.is_fixed, options);
+    std::vector<std::size_t> stage_one, stage_two;
+    for(std::size_t k = 0; k < steps.size(); ++k) {
+      if(steps[k].stage == 1) stage_one.push_back(k);
+      if(steps[k].stage == 2) stage_two.push_back(k);
+    }
+    std::cout << c.name << " [" << solver << "]: " << stage_one.size() << " steps in stage 1, " << stage_two.size()
+              << " in stage 2\n";
+    CHECK_MESSAGE(result.is_locally_invertible(), CGAL::Mesh_untangling::to_string(result.status));
+    CHECK_MESSAGE(!stage_one.empty() && !stage_two.empty(), solver << ": stages 1 and 2 expected");
+    if(stage_one.empty() || stage_two.empty()) continue;
+    // stage 1 ends at its first step with every element positive
+    for(std::size_t k : stage_one)
+      CHECK_MESSAGE((steps[k].non_positive == 0) == (k == stage_one.back()),
+                    solver << ", step " << k << ": " << steps[k].non_positive << " non-positive elements");
+    CHECK(stage_two.front() == stage_one.back() + 1);
+    for(std::size_t k : stage_two) CHECK(steps[k].non_positive == 0);
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -88,7 +126,10 @@ int main(int argc, char** argv)
     if(is_block == cuboidblocks) cases.push_back(c);
   }
   CHECK(cases.size() == (cuboidblocks ? 14u : 5u));
-  if(!cuboidblocks) check_time_limit_inside_inner_solve(data);
+  if(!cuboidblocks) {
+    check_time_limit_inside_inner_solve(data);
+    check_stages_hand_over_at_first_valid_map(data);
+  }
   for(const Case_spec& c : cases) {
     // lim/armadillo-598: its fixed boundary is over-wound at 5 edges and 2 vertices whose tets are all fixed
     const std::size_t input_defects = c.kind == Case_spec::PAIR ? 7 : 0;
