@@ -309,16 +309,17 @@ double group_step_bound(const Untangling_problem<d>& P, const double* x, const d
   if(!((c[0] > 0).all())) return -1;   // (the idle lanes repeat an element of the group)
   // An element turning over later than one already seen changes nothing;
   // most cannot turn over before: c[0] exceeds the other terms' bound.
+  const double reach = std::min(t, limit);
   L others = L::Zero();
-  const double L_max = std::min(t, limit);
-  for(int i = d; i > 0; --i) others = (others + c[i].abs()) * L_max;
+  for(int i = d; i > 0; --i) others = (others + c[i].abs()) * reach;
   if(!((others >= c[0]).any())) return t;
+  // again lane by lane, since t shrinks within the group
   for(int l = 0; l < count; ++l) {
-    const double L_l = std::min(t, limit);
-    double coefficients[d + 1], o = 0;
+    const double lane_reach = std::min(t, limit);
+    double coefficients[d + 1], sum = 0;
     for(int i = 0; i <= d; ++i) coefficients[i] = c[i][l];
-    for(int i = d; i > 0; --i) o = (o + std::abs(coefficients[i])) * L_l;
-    if(o >= coefficients[0]) t = std::min(t, first_positive_root(coefficients, d + 1, L_l));
+    for(int i = d; i > 0; --i) sum = (sum + std::abs(coefficients[i])) * lane_reach;
+    if(sum >= coefficients[0]) t = std::min(t, first_positive_root(coefficients, d + 1, lane_reach));
   }
   return t;
 }
