@@ -129,9 +129,9 @@ public:
   /// when the count of non-positive elements has not gone down for
   /// stall_patience() steps.  With Eps_loop_goal::VALID_MAP, stops at the
   /// first valid map instead of polishing it toward targets that the next
-  /// stage replaces (the regular targets of stage 1: 3 to 19 % of the
-  /// evaluations of a Newton run on the CuboidBlocks, with the same final
-  /// energies; L-BFGS on i13c: 9 stage-1 steps instead of 23).
+  /// stage replaces (the regular targets of stage 1: 7 to 14 % of the
+  /// evaluations of a Newton run on the CuboidBlocks, up to 37 % of an
+  /// L-BFGS run, with the same final energies).
   ///
   /// L-BFGS follows the published scheme exactly.  Newton follows
   /// Adaptive_epsilon, and each of its inner solves runs until the quadratic
