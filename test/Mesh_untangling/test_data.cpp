@@ -47,15 +47,22 @@ bool run(const Case_spec& c, double time_limit, std::size_t expected_input_defec
   return verdict.locally_invertible && verdict.inverted == 0 && result.is_locally_invertible();
 }
 
+/// The case of the data named `name`; an empty name (and a failed check) when it is missing.
+Case_spec find_case(const std::string& data, const std::string& name)
+{
+  Case_spec c;
+  for(const Case_spec& s : all_fixed_boundary(data))
+    if(s.name == name) c = s;
+  CHECK_MESSAGE(!c.name.empty(), name << " not found in " << data);
+  return c;
+}
+
 /// The published scheme's inner solve watches the clock: on i23c_s31 its
 /// first eps step alone makes thousands of L-BFGS iterations, and a limit
 /// of a tenth of that step's time must stop it in the middle.
 void check_time_limit_inside_inner_solve(const std::string& data)
 {
-  Case_spec c;
-  for(const Case_spec& s : all_fixed_boundary(data))
-    if(s.name == "i23c_s31.hexex_block427") c = s;
-  CHECK(!c.name.empty());
+  const Case_spec c = find_case(data, "i23c_s31.hexex_block427");
   if(c.name.empty()) return;
   const auto one_step = [&](double seconds) {
     Problem p = load(c);
@@ -81,10 +88,7 @@ void check_time_limit_inside_inner_solve(const std::string& data)
 /// map to stage 2, which goes back to the given targets and keeps it valid.
 void check_stages_hand_over_at_first_valid_map(const std::string& data)
 {
-  Case_spec c;
-  for(const Case_spec& s : all_fixed_boundary(data))
-    if(s.name == "i13c_s6.hexex_block432") c = s;
-  CHECK(!c.name.empty());
+  const Case_spec c = find_case(data, "i13c_s6.hexex_block432");
   if(c.name.empty()) return;
   for(const std::string solver : {"newton", "lbfgs"}) {
     Problem p = load(c);
