@@ -100,7 +100,6 @@ void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
 /// Where one run of the eps loop ended.
 struct Eps_loop_outcome
 {
-  bool settled = false;            // every element positive, energy settled
   bool stalled = false;            // the number of inverted elements stopped going down
   bool numerical_failure = false;
   bool stopped = false;            // by the callback or the clock
@@ -173,7 +172,7 @@ public:
       const bool settled = goal == Eps_loop_goal::VALID_MAP ? summary.min_det > 0
                          : newton ? valid && inner.converged && summary.min_det > 0
                                   : energy_settled(E, E_prev, summary.min_det);
-      if(settled) { out.settled = true; break; }
+      if(settled) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }
       // Below tiny_epsilon the energy of a flat element overflows long before
@@ -284,19 +283,39 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
       for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
 }
 
-/// The invertibility report on the mesh part of `in` (phantoms left out);
-/// with `stars_too` false, only what the element orientations decide.
-template <int d>
-Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                const std::vector<bool>& is_fixed, bool stars_too = true)
+/// `check(positions, elements, orientation, fixed)` on the mesh part of `in`
+/// (phantoms left out): a report on the mesh alone.
+template <int d, class Check>
+Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                     const std::vector<bool>& is_fixed, const Check& check)
 {
   const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
   const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
   const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
   const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
   const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
-  return stars_too ? check_local_invertibility<d>(as_arrays<d>(positions), elements, orientation, fixed)
-                   : check_elements<d>(as_arrays<d>(positions), elements, orientation, fixed);
+  return check(as_arrays<d>(positions), elements, orientation, fixed);
+}
+
+/// The invertibility report on the mesh part of `in`: elements and stars.
+template <int d>
+Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                const std::vector<bool>& is_fixed)
+{
+  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+    return check_local_invertibility<d>(arguments...);
+  });
+}
+
+/// Only what the element orientations decide (the inverted elements of the
+/// mesh part of `in`): the figures before a run, without the cost of the stars.
+template <int d>
+Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                         const std::vector<bool>& is_fixed)
+{
+  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+    return check_elements<d>(arguments...);
+  });
 }
 
 /// Untangles `in.positions` in place, directly from the given map (free
@@ -342,7 +361,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
   const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report before = check_mesh<d>(in, P.reference_orientation, is_fixed, false);
+  const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed);
   result.inverted_before = before.inverted_elements;
   result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
 

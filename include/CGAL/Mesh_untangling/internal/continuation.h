@@ -180,7 +180,7 @@ Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_
   Untangling_result figures;
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
   const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  figures.inverted_before = check_mesh<d>(in, P.reference_orientation, is_fixed, false).inverted_elements;
+  figures.inverted_before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed).inverted_elements;
   figures.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
   return figures;
 }
