@@ -10,6 +10,10 @@
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 using namespace Mesh_untangling_tools;
 
 /// Returns the result's solver: the one that ran.
@@ -77,6 +81,41 @@ void check_scaling()
   }
 }
 
+/// The hand-over runs LBFGSpp's iteration with its vector algebra in
+/// chunks (Chunked_LBFGS): on this grid it makes the same eps steps, inner
+/// iterations and evaluations as the reference LBFGSpp, though not the same
+/// bits (the dot products are summed by chunks), and the same bits with 1
+/// and 2 threads.
+void check_hand_over_algebra(const Mesh_file& tangled)
+{
+  std::vector<bool> fixed(tangled.map.size(), false);
+  for(std::size_t v : tangled.fixed) fixed[v] = true;
+  const auto untangle = [&](const std::string& solver, int threads) {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
+#else
+    (void)threads;
+#endif
+    Mesh_file mesh = tangled;
+    Run_options options;
+    options.solver = solver;
+    const auto result = untangle_mesh_file(mesh, fixed, options);
+    return std::make_pair(result, mesh.map);
+  };
+  const auto [reference, reference_map] = untangle("lbfgs", 2);
+  const auto [one, one_map] = untangle("auto", 1);
+  const auto [two, two_map] = untangle("auto", 2);
+  std::cout << "cube 20^3: lbfgs " << reference.outer_iterations << " eps steps, " << reference.inner_iterations
+            << " iterations, " << reference.energy_evaluations << " evaluations; hand-over " << one.outer_iterations
+            << ", " << one.inner_iterations << ", " << one.energy_evaluations << "\n";
+  CHECK(one.is_locally_invertible() && two.is_locally_invertible());
+  CHECK_MESSAGE(one.solver.rfind("lbfgs (", 0) == 0, one.solver);
+  CHECK(one.outer_iterations == reference.outer_iterations && one.inner_iterations == reference.inner_iterations &&
+        one.energy_evaluations == reference.energy_evaluations);
+  CHECK_MESSAGE(one_map == two_map, "the hand-over's result depends on the number of threads");
+  CHECK_MESSAGE(one_map != reference_map, "the hand-over gave LBFGSpp's bits: did it run LBFGSpp?");
+}
+
 int main()
 {
   check_epsilon_sequence();
@@ -96,6 +135,10 @@ int main()
   perturb_interior(cube, 16, 1.2, 1);
   const std::string ran = run("cube 16^3", cube, "auto");
   CHECK_MESSAGE(ran.rfind("lbfgs (a Newton factorization would cost ", 0) == 0, ran);
+  // more unknowns (27,783) than one chunk of vector algebra (16,384)
+  Mesh_file larger = make_cube_grid(20);
+  perturb_interior(larger, 20, 1.2, 1);
+  check_hand_over_algebra(larger);
 #endif
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();

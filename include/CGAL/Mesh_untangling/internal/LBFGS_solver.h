@@ -9,6 +9,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_LBFGS_SOLVER_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_LBFGS_SOLVER_H
 
+#include <CGAL/Mesh_untangling/internal/Chunked_LBFGS.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 
 #include <LBFGS.h>
@@ -59,10 +60,16 @@ double published_gradient_threshold(const Untangling_problem<d>& P)
   return 1e-4 * std::max(1., std::sqrt(x_norm2)) / (std::pow(10., d - 1) * volume);
 }
 
+/// Who does L-BFGS's vector algebra: LBFGSpp (the reference, serial), or
+/// Chunked_LBFGS (the same iteration, the algebra in chunks).
+enum class LBFGS_algebra { LBFGSPP, CHUNKED };
+
 template <int d>
 class LBFGS_solver
 {
 public:
+  explicit LBFGS_solver(LBFGS_algebra algebra = LBFGS_algebra::LBFGSPP) : algebra_(algebra) {}
+
   /// Partially minimizes F(., eps) from P.x; P.x receives the result.
   /// `out_of_time` is asked before every evaluation: one inner solve of the
   /// published scheme may make 3,000 to 30,000 iterations (over 30 s on the
@@ -98,11 +105,16 @@ public:
     param.max_iterations = max_iterations;
     param.max_linesearch = 40;
     param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
-    LBFGSpp::LBFGSSolver<double, LBFGSpp::LineSearchNocedalWright> solver(param);
+    param.check_param();
     Eigen::VectorXd x = best;
     double fx = 0;
     try {
-      stats.iterations = static_cast<std::size_t>(solver.minimize(F, x, fx));
+      if(algebra_ == LBFGS_algebra::CHUNKED) {
+        stats.iterations = static_cast<std::size_t>(Chunked_LBFGS(param).minimize(F, x, fx));
+      } else {
+        LBFGSpp::LBFGSSolver<double, LBFGSpp::LineSearchNocedalWright> solver(param);
+        stats.iterations = static_cast<std::size_t>(solver.minimize(F, x, fx));
+      }
     } catch(const Time_is_up&) {
       stats.iterations = stats.evaluations;   // the caller's clock tells it why
     } catch(const std::invalid_argument&) {
@@ -114,6 +126,9 @@ public:
       Eigen::Map<Eigen::VectorXd>(P.x.data(), P.x.size()) = best;
     return stats;
   }
+
+private:
+  LBFGS_algebra algebra_;
 };
 
 } // namespace internal

@@ -154,7 +154,8 @@ public:
       const bool valid = summary.min_det > 0;
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? 1e-6 : 1e-4)
-               : LBFGS_solver<d>().minimize(P, eps, theta_, inner_iterations(valid), [this] { return out_of_time(); });
+               : LBFGS_solver<d>(lbfgs_algebra()).minimize(P, eps, theta_, inner_iterations(valid),
+                                                           [this] { return out_of_time(); });
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
@@ -219,6 +220,14 @@ private:
     result_.solver = to_string(Solver::LBFGS) + " (a Newton factorization would cost " +
                      std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element)";
     return nullptr;
+  }
+
+  /// The reference keeps LBFGSpp as it is; Solver::AUTOMATIC's hand-over
+  /// (large grids, a million unknowns) runs the same iteration with its
+  /// vector algebra in chunks, in parallel.
+  LBFGS_algebra lbfgs_algebra() const
+  {
+    return options_.solver == Solver::AUTOMATIC ? LBFGS_algebra::CHUNKED : LBFGS_algebra::LBFGSPP;
   }
 
   /// Inner iterations per eps step: the caller's, else the published
