@@ -97,6 +97,31 @@ double coloured_sum(const Untangling_problem<d>& P, Value&& value)
 /// that two independent chains of divisions and roots overlap.
 constexpr int energy_lanes = 8;
 
+/// The vertex coordinates (from `x`) of the elements [first, first + count),
+/// count <= W, in lanes: X[row + d i][l] is coordinate `row` of vertex i of
+/// element first + l.  A short group repeats its last element in the idle lanes.
+template <int d, int W>
+EIGEN_ALWAYS_INLINE void gather_vertex_lanes(const Untangling_problem<d>& P, const double* x, std::size_t first,
+                                             int count, Lanes<W>* X)
+{
+  for(int l = 0; l < W; ++l) {
+    const std::size_t k = first + std::min(l, count - 1);
+    for(int i = 0; i <= d; ++i)
+      for(int row = 0; row < d; ++row) X[row + d * i][l] = x[d * P.elements[k][i] + row];
+  }
+}
+
+/// The gradient operators of the same group, in lanes (storage order).
+template <int d, int W>
+EIGEN_ALWAYS_INLINE void gather_operator_lanes(const Untangling_problem<d>& P, std::size_t first, int count,
+                                               Lanes<W>* G)
+{
+  for(int l = 0; l < W; ++l) {
+    const std::size_t k = first + std::min(l, count - 1);
+    for(int j = 0; j < (d + 1) * d; ++j) G[j][l] = P.gradient_operators[k].data()[j];
+  }
+}
+
 /// Adds w_k f(J_k) for the elements [first, first + count), count <= W, to
 /// `sum` in element order and, when `gradient` is given, their gradients to
 /// their free vertices.  The elements are the lanes of W-wide arithmetic; a
@@ -107,13 +132,9 @@ void add_element_group(const Untangling_problem<d>& P, const double* x, const Si
 {
   using L = Lanes<W>;
   L X[d * (d + 1)], G[(d + 1) * d], w;
-  for(int l = 0; l < W; ++l) {
-    const std::size_t k = first + std::min(l, count - 1);
-    for(int i = 0; i <= d; ++i)
-      for(int row = 0; row < d; ++row) X[row + d * i][l] = x[d * P.elements[k][i] + row];
-    for(int j = 0; j < (d + 1) * d; ++j) G[j][l] = P.gradient_operators[k].data()[j];
-    w[l] = P.weights[k];
-  }
+  gather_vertex_lanes<d, W>(P, x, first, count, X);
+  gather_operator_lanes<d, W>(P, first, count, G);
+  for(int l = 0; l < W; ++l) w[l] = P.weights[first + std::min(l, count - 1)];
   L J[d * d], C[d * d];
   jacobian_from_vertices<d>(X, G, J);
   const L D = determinant_and_cofactor<d>(J, C);

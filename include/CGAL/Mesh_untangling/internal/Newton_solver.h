@@ -292,16 +292,9 @@ double group_step_bound(const Untangling_problem<d>& P, const double* x, const d
 {
   using L = Lanes<W>;
   L X[d * (d + 1)], dX[d * (d + 1)], G[(d + 1) * d];
-  for(int l = 0; l < W; ++l) {
-    const std::size_t k = first + std::min(l, count - 1);
-    for(int i = 0; i <= d; ++i)
-      for(int row = 0; row < d; ++row) {
-        const std::size_t at = d * P.elements[k][i] + row;
-        X[row + d * i][l] = x[at];
-        dX[row + d * i][l] = dx[at];
-      }
-    for(int j = 0; j < (d + 1) * d; ++j) G[j][l] = P.gradient_operators[k].data()[j];
-  }
+  gather_vertex_lanes<d, W>(P, x, first, count, X);
+  gather_vertex_lanes<d, W>(P, dx, first, count, dX);
+  gather_operator_lanes<d, W>(P, first, count, G);
   L J[d * d], dJ[d * d], c[d + 1];
   jacobian_from_vertices<d>(X, G, J);
   jacobian_from_vertices<d>(dX, G, dJ);
