@@ -34,14 +34,14 @@ namespace internal {
 template <int W>
 using Lanes = Eigen::Array<double, W, 1>;
 
-inline double where_positive(double D, double if_positive, double otherwise)
+EIGEN_ALWAYS_INLINE double where_positive(double D, double if_positive, double otherwise)
 {
   return D > 0 ? if_positive : otherwise;
 }
 
 /// (either branch may also be a plain double, the same in every lane)
 template <int W, class If_positive, class Otherwise>
-Lanes<W> where_positive(const Lanes<W>& D, const If_positive& if_positive, const Otherwise& otherwise)
+EIGEN_ALWAYS_INLINE Lanes<W> where_positive(const Lanes<W>& D, const If_positive& if_positive, const Otherwise& otherwise)
 {
   return (D > 0).select(if_positive, otherwise);
 }
