@@ -22,6 +22,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -45,6 +46,21 @@ struct Untangling_options
 };
 
 constexpr int max_restarts = 10;           // shakes in stage 1
+
+/// Newton's stage 0, when stage 1 follows with regular targets, also gives
+/// up (Stall_test::COUNT_NOT_HALVED) when the count of non-positive elements
+/// has never fallen below the input's, is at least halving_floor, and has
+/// not halved in halving_window steps.  Given targets that hold elements
+/// inverted show it from the first steps: on the CuboidBlocks that stage 1
+/// untangles, the count jumps (i13c 27 -> 193, s08c 102 -> 1,397) and then
+/// falls by a few per cent per step until stall_patience runs out, a third
+/// of the run on i13c; the cases stage 0 untangles halve it every step or
+/// two (i23c 75, 27, 18, 11, 5, ...).  Small counts move by ones and twos,
+/// not by halves (the test suite's small stars and grids with phantoms
+/// fail without the floor), so they keep the patience alone; so does
+/// stage 1, whose counts can stand for three steps before they fall.
+constexpr std::size_t halving_window = 3;
+constexpr std::size_t halving_floor = 64;
 
 /// Solver::AUTOMATIC hands over from Newton to L-BFGS when one numeric
 /// factorization of the Hessian would cost more than both (CHOLMOD's
@@ -110,6 +126,14 @@ struct Eps_loop_outcome
 /// hands a valid map to the next one) as soon as every element is positive.
 enum class Eps_loop_goal { SETTLED_ENERGY, VALID_MAP };
 
+/// When an eps loop gives up untangling ("stalls").
+enum class Stall_test
+{
+  NONE,               // never (stage 2, from a valid map)
+  COUNT_STANDS,       // the count of non-positive elements has not gone down for stall_patience() steps
+  COUNT_NOT_HALVED    // that, or Newton has not halved the count in halving_window steps
+};
+
 /// The eps loop of the published scheme, shared by the stages below.
 template <int d>
 class Eps_loop
@@ -124,9 +148,7 @@ public:
   bool out_of_time() const { return seconds() > options_.max_seconds; }
 
   /// Partial minimizations of F(., eps) from P.x until the energy settles
-  /// with every element positive.  With `give_up_on_stall`, also gives up
-  /// when the count of non-positive elements has not gone down for
-  /// stall_patience() steps.  With Eps_loop_goal::VALID_MAP, stops at the
+  /// with every element positive, or until `stall` gives up.  With Eps_loop_goal::VALID_MAP, stops at the
   /// first valid map instead of polishing it toward targets that the next
   /// stage replaces (the regular targets of stage 1: 7 to 14 % of the
   /// evaluations of a Newton run on the CuboidBlocks, up to 37 % of an
@@ -138,16 +160,19 @@ public:
   /// where eps is tiny and a converged solve is the end: free boundaries have
   /// soft modes, rigid motions and scaling, that a looser test leaves
   /// visibly short of the minimum) or a few steps.
-  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, bool give_up_on_stall,
+  Eps_loop_outcome run(Untangling_problem<d>& P, int stage, Stall_test stall,
                        Eps_loop_goal goal = Eps_loop_goal::SETTLED_ENERGY)
   {
     Eps_loop_outcome out;
     Newton_solver<d>* newton = newton_solver(P);
-    const std::size_t patience = give_up_on_stall ? stall_patience() : 0;
+    const std::size_t patience = stall == Stall_test::NONE ? 0 : stall_patience();
     Adaptive_epsilon adaptive;
     auto summary = determinant_summary(P, P.x.data());
     double eps = newton && summary.min_det > 0 ? tiny_epsilon : initial_epsilon(summary.min_det);
-    std::size_t best = summary.non_positive, since_best = 0;
+    const std::size_t initial_count = summary.non_positive;
+    std::size_t best = initial_count, since_best = 0;
+    const bool must_halve = stall == Stall_test::COUNT_NOT_HALVED && newton != nullptr;
+    std::vector<std::size_t> counts;   // of non-positive elements after each step
     while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
@@ -176,6 +201,12 @@ public:
       if(settled) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }
+      counts.push_back(summary.non_positive);
+      if(must_halve && counts.size() > halving_window && best == initial_count && counts.back() >= halving_floor &&
+         2 * counts.back() > counts[counts.size() - 1 - halving_window]) {
+        out.stalled = true;
+        break;
+      }
       // Below tiny_epsilon the energy of a flat element overflows long before
       // it helps: the floor keeps the problem numerically solvable.
       eps = newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
@@ -376,24 +407,26 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
 
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
-  Eps_loop_outcome outcome = loop.run(P, 0, true);
+  const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
+  Eps_loop_outcome outcome =
+    loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
   if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
     // with given targets, stage 2 takes over from the first valid map
     const Eps_loop_goal goal = targets_given ? Eps_loop_goal::VALID_MAP : Eps_loop_goal::SETTLED_ENERGY;
-    if(targets_given) outcome = loop.run(R, 1, true, goal);
+    if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
     // Still stuck: typically free vertices collapsed onto each other, a
     // symmetric configuration the gradient cannot break.  Shake the vertices
     // of the non-positive elements and go on.
     std::mt19937 random(1);
     for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
       shake_non_positive_elements(R, random);
-      outcome = loop.run(R, 1, true, goal);
+      outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
     }
     const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
     P.x = R.x;
     if(targets_given && untangled && !outcome.stopped && !loop.out_of_time()) {
-      outcome = loop.run(P, 2, false);
+      outcome = loop.run(P, 2, Stall_test::NONE);
       if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
     }
   }
