@@ -156,7 +156,7 @@ public:
   ///
   /// L-BFGS follows the published scheme exactly.  Newton follows
   /// Adaptive_epsilon, and each of its inner solves runs until the quadratic
-  /// model predicts a relative decrease below 1e-4 (1e-5 from a valid map,
+  /// model predicts a relative decrease below 1e-4 (1e-6 from a valid map,
   /// where eps is tiny and a converged solve is the end: free boundaries have
   /// soft modes, rigid motions and scaling, that a looser test leaves
   /// visibly short of the minimum) or a few steps.
