@@ -151,7 +151,6 @@ void add_element_group(const Untangling_problem<d>& P, const double* x, const Si
   for(int l = 0; l < count; ++l)
     for(int i = 0; i <= d; ++i) {
       const std::size_t v = P.elements[first + l][i];
-      if(P.is_fixed[v]) continue;
       for(int row = 0; row < d; ++row) gradient[d * v + row] += E[row + d * i][l];
     }
 }
@@ -178,6 +177,12 @@ double energy(const Untangling_problem<d>& P, const double* x, double eps, doubl
     if(chunk_non_positive > 0) non_positive_elements += chunk_non_positive;
     return sum;
   });
+  if(gradient != nullptr)   // (cheaper once here than a test per vertex of every element)
+    for_each_chunk(P.number_of_vertices, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v)
+        if(P.is_fixed[v])
+          for(int row = 0; row < d; ++row) gradient[d * v + row] = 0;
+    });
   if(non_positive != nullptr) *non_positive = non_positive_elements;
   return F;
 }
