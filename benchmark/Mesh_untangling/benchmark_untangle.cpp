@@ -11,14 +11,12 @@
 // Run with --help for the forms of CASE.
 
 #include "cases.h"
+#include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 #include <algorithm>
 #include <cerrno>
@@ -148,13 +146,7 @@ std::string positions_hash(const Mesh_file& mesh)
 
 void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit, int threads)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::global_control> limit;
-  if(threads > 0)
-    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-#else
-  (void)threads;   // serial build: one thread whatever is asked
-#endif
+  const Thread_limit limit(threads);
   auto send = [fd](const std::string& key, const std::string& value) { write_all(fd, key + "\t" + value + "\n"); };
   try {
     Problem p = load(c);
@@ -524,7 +516,7 @@ Arguments parse_arguments(int argc, char** argv)
         throw Usage_error{"--time-limit: '" + value + "' is not a positive number of seconds"};
     } else if(name == "--threads") {
       double threads = 0;
-      if(!parse_number(value, threads) || !(threads >= 1) || threads != std::floor(threads) || threads > 4096)
+      if(!parse_number(value, threads) || !(threads >= 1) || threads != std::floor(threads) || threads > max_thread_count)
         throw Usage_error{"--threads: '" + value + "' is not a number of threads"};
       a.threads = static_cast<int>(threads);
     } else {

@@ -12,13 +12,10 @@
 // CASE as for benchmark_untangle (e.g. generated:cube:55:0.6:1).
 
 #include "cases.h"
+#include "thread_limit.h"
 
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -120,8 +117,9 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if((a == "--threads" || a == "--repeat") && i + 1 < argc) {
       int value = 0;
-      if(!parse_number(argv[++i], value) || value < 1) {
-        std::cerr << "energy_bandwidth: " << a << " needs a positive integer\n";
+      if(!parse_number(argv[++i], value) || value < 1 || (a == "--threads" && value > max_thread_count)) {
+        std::cerr << "energy_bandwidth: " << a << " needs a positive integer"
+                  << (a == "--threads" ? " of at most " + std::to_string(max_thread_count) : std::string()) << "\n";
         return 2;
       }
       (a == "--threads" ? threads : repeat) = value;
@@ -138,10 +136,7 @@ int main(int argc, char** argv)
     std::cerr << "energy_bandwidth: no case given\n";
     return 2;
   }
-#ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::global_control> limit;
-  if(threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-#endif
+  const Thread_limit limit(threads);
   try {
     const double bandwidth = copy_bandwidth();
     std::printf("memcpy bandwidth (read + write): %.2f GB/s%s\n\n", bandwidth / 1e9,

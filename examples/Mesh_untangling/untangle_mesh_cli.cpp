@@ -5,6 +5,7 @@
 // writes the result whole (or not at all), checks local invertibility on the
 // coordinates as written, and says so with its exit code:
 //   0 locally invertible, 1 not (result still written), 2 bad usage or input.
+#include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/IO/handles.h>
@@ -38,6 +39,7 @@ struct Arguments
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
   std::size_t continuation_steps = MU::default_continuation_steps;
+  int threads = 0;              // 0: every core
 };
 
 /// Bad usage or input: reported, nothing written, exit code 2.
@@ -443,6 +445,8 @@ int main(int argc, char** argv)
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");
   app.add_option("--phantoms", args.phantoms, "the phantom elements used, on the final map: .vtk (with a 'positive' "
                  "cell field), .mesh, .off or .obj");
+  app.add_option("--threads", args.threads, "at most N threads (default: every core); the result is the same, "
+                 "bit for bit, with any number")->check(CLI::Range(1, max_thread_count));
   app.add_flag("-q,--quiet", args.quiet, "no progress on stderr");
   try {
     app.parse(argc, argv);
@@ -453,6 +457,7 @@ int main(int argc, char** argv)
     return 2;
   }
   if(args.output.empty()) args.output = default_output(args.input);
+  const Thread_limit thread_limit(args.threads);
   try {
     return run(args);
   } catch(const IO::Read_error& e) {

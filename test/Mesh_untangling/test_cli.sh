@@ -227,6 +227,14 @@ if [ "${MU_WITH_CHOLMOD:-0}" = 1 ]; then
 else   # documented: the prediction needs CHOLMOD, so auto stays with Newton
   check "--solver auto, cube 16: newton (no CHOLMOD, no prediction)" json_is auto16.json solver '"newton"'
 fi
+# --threads: the same result, byte for byte, with 1 thread, 2 and every core
+# (cube 16: several chunks per colour and per vector)
+run threads1 cube16.input -o threads1.input --threads 1 -q
+run threads2 cube16.input -o threads2.input --threads 2 -q
+check "--threads 1: exit 0" rc_is threads1 0
+check "--threads 2: exit 0" rc_is threads2 0
+check "--threads 1 and 2: same result" cmp -s threads1.input threads2.input
+check "--threads 1 and every core: same result" cmp -s threads1.input auto16.input
 
 # --svg and --svg-input: pictures of a 2D map, written whole. The input
 # picture shows the tangled triangles in red, the result none; the report
@@ -404,6 +412,8 @@ fails unknown_solver 'solver.*foo' square.input --solver foo
 fails theta_too_big 'theta.*2' square.input --theta 2
 fails theta_negative 'theta' square.input --theta -0.5
 fails zero_iterations 'max-iterations' square.input --max-iterations 0
+fails zero_threads 'threads' square.input --threads 0
+fails word_threads 'threads' square.input --threads many
 fails fixed_and_boundary 'fixed.*fix-boundary|fix-boundary.*fixed' square.input --fixed x.txt --fix-boundary
 fails output_dir_missing "nodir/out\\.vtk: directory 'nodir' does not exist" square.input -o nodir/out.vtk
 fails report_dir_missing "nodir/r\\.json: directory 'nodir' does not exist" square.input --report nodir/r.json
