@@ -59,15 +59,15 @@ double copy_bandwidth()
 /// Bytes the energy + gradient pass (internal::energy with a gradient) must
 /// move at least, if every array is streamed once and each vertex's
 /// coordinates and gradient stay in cache while its elements are visited:
-/// per element its vertex ids, gradient operator, weight and fixed flags;
-/// per vertex its coordinates (read) and its gradient
-/// (cleared, then read and written back).
+/// per element its vertex ids, gradient operator and weight; per vertex its
+/// coordinates (read), its gradient (cleared, then read and written back) and
+/// its fixed flag (read once, since the pass zeroes the fixed vertices'
+/// gradients at the end instead of testing every element's vertices).
 template <int d>
 double bytes_moved(const MU::internal::Untangling_problem<d>& P)
 {
-  const double per_element =
-      (d + 1) * sizeof(std::size_t) + (d + 1) * d * sizeof(double) + sizeof(double) + (d + 1) * sizeof(char);
-  const double per_vertex = 4. * d * sizeof(double);
+  const double per_element = (d + 1) * sizeof(std::size_t) + (d + 1) * d * sizeof(double) + sizeof(double);
+  const double per_vertex = 4. * d * sizeof(double) + sizeof(char);
   return per_element * P.elements.size() + per_vertex * P.number_of_vertices;
 }
 
