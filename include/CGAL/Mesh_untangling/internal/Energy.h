@@ -124,8 +124,9 @@ EIGEN_ALWAYS_INLINE void gather_operator_lanes(const Untangling_problem<d>& P, s
 
 /// Adds w_k f(J_k) for the elements [first, first + count), count <= W, to
 /// `sum` in element order and, when `gradient` is given, their gradients to
-/// their free vertices.  The elements are the lanes of W-wide arithmetic; a
-/// short group repeats its last element in the idle lanes.
+/// all their vertices (`energy` zeroes the fixed ones at the end).  The
+/// elements are the lanes of W-wide arithmetic; a short group repeats its
+/// last element in the idle lanes.
 template <int d, int W>
 void add_element_group(const Untangling_problem<d>& P, const double* x, const Simplex_energy<d>& f,
                        std::size_t first, int count, double& sum, double* gradient, std::size_t& non_positive)

@@ -131,7 +131,7 @@ enum class Stall_test
 {
   NONE,               // never (stage 2, from a valid map)
   COUNT_STANDS,       // the count of non-positive elements has not gone down for stall_patience() steps
-  COUNT_NOT_HALVED    // that, or Newton has not halved the count in halving_window steps
+  COUNT_NOT_HALVED    // that, or (Newton) the halving rule: see halving_window
 };
 
 /// The eps loop of the published scheme, shared by the stages below.
