@@ -402,6 +402,10 @@ class Newton_solver
   using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
 #endif
 
+  static constexpr int n = d * (d + 1);   // vertex coordinates of an element
+  /// The lower triangle of an element's vertex Hessian, column by column.
+  using Packed_hessian = std::array<double, n * (n + 1) / 2>;
+
 public:
   /// Builds the Hessian's pattern and its symbolic factorization, whose
   /// cost prediction (`factorization_flops`) tells the caller whether this
@@ -425,9 +429,9 @@ public:
   /// `tolerance` |F| (`converged` is then set).
   ///
   /// The steps are those of L-BFGS whose initial inverse Hessian is the
-  /// factorized projected Hessian, assembled afresh every
-  /// `steps_per_factorization` steps (the first step of each sequence is a
-  /// projected Newton step).  Assembly and factorization are what a step
+  /// factorized projected Hessian, updated every `steps_per_factorization`
+  /// steps (the first step of each sequence is a projected Newton step).
+  /// Assembly and factorization are what a step
   /// costs in Newton's method, ten to forty energy passes; the quasi-Newton
   /// corrections also restore the curvature the per-element projection
   /// removed, which left projected Newton converging only linearly, by about
@@ -439,7 +443,7 @@ public:
     Inner_statistics stats;
     const int N = d * pattern_.number_of_free();
     if(N == 0) { stats.converged = true; return stats; }
-    std::vector<double> trial(P.x.size()), further(P.x.size()), vertex_gradient(P.x.size()), vertex_direction(P.x.size());
+    std::vector<double> trial(P.x.size()), further(P.x.size()), vertex_direction(P.x.size());
     Eigen::VectorXd g(N), g_trial(N), direction(N), q(N);
     // the step direction per vertex (zero on fixed ones), set at each step
     auto move = [&](double alpha, std::vector<double>& to) {
@@ -451,13 +455,7 @@ public:
     // from a valid map, where it exists.
     std::size_t non_positive = 0, non_positive_at_trial = 0;
     auto energy_and_gradient = [&](const std::vector<double>& x, Eigen::VectorXd& free_gradient, std::size_t& tangled) {
-      const double value = energy<d>(P, x.data(), eps, theta, vertex_gradient.data(), &tangled);
-      for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
-        const int f = pattern_.free_index(v);
-        if(f >= 0)
-          for(int c = 0; c < d; ++c) free_gradient[d * f + c] = vertex_gradient[d * v + c];
-      }
-      return value;
+      return energy_and_free_gradient(P, x.data(), eps, theta, free_gradient, &tangled);
     };
     Quasi_newton_pairs pairs;
 
@@ -493,8 +491,8 @@ public:
 
       // Armijo backtracking on F(., eps), finite everywhere for eps > 0.  The
       // first trial is nearly always accepted, and the next step needs the
-      // gradient there (or, every few steps, the Hessian): the first trial
-      // computes them at once.  Shorter trials compute the energy alone.
+      // gradient there: the first trial computes both at once.  Shorter
+      // trials compute the energy alone.
       //
       // From a valid map the first trial stops short (step_fraction) of where
       // the first element turns over.  Near the barrier (eps tiny: the last
@@ -514,15 +512,8 @@ public:
         if(ls > 0) alpha /= 2;
         move(alpha, trial);
         derivatives_at_trial = ls == 0 && !last;
-        if(derivatives_at_trial && refresh) {
-          P.x.swap(trial);
-          E_trial = assemble(P, eps, theta, g_trial, &non_positive_at_trial);
-          P.x.swap(trial);
-        } else if(derivatives_at_trial) {
-          E_trial = energy_and_gradient(trial, g_trial, non_positive_at_trial);
-        } else {
-          E_trial = energy<d>(P, trial.data(), eps, theta);
-        }
+        E_trial = derivatives_at_trial ? energy_and_gradient(trial, g_trial, non_positive_at_trial)
+                                       : energy<d>(P, trial.data(), eps, theta);
         ++stats.evaluations;
         accepted = std::isfinite(E_trial) && E_trial <= E + 1e-4 * alpha * slope;
       }
@@ -547,12 +538,12 @@ public:
       if(last) { stats.converged = true; break; }
       const double decrease = E - E_trial;
       if(!derivatives_at_trial) {
-        E_trial = refresh ? assemble(P, eps, theta, g_trial, &non_positive_at_trial)
-                          : energy_and_gradient(P.x, g_trial, non_positive_at_trial);
+        E_trial = energy_and_gradient(P.x, g_trial, non_positive_at_trial);
         ++stats.evaluations;
         if(!std::isfinite(E_trial)) { stats.finite = false; break; }
       }
       if(refresh) {
+        update_hessian(P, eps, theta);
         if(!factorize()) { stats.finite = false; break; }
         pairs.clear();   // they corrected the previous factorization
         since_factorization = 0;
@@ -572,68 +563,98 @@ public:
   const Eigen::SparseMatrix<double>& hessian() const { return pattern_.matrix(); }
   int free_index(std::size_t v) const { return pattern_.free_index(v); }
 
-  /// Energy, gradient (restricted to free unknowns) and the PSD Hessian.
-  ///
-  /// Colour by colour, the elements of one colour run in parallel chunks and
-  /// add their gradient entries and Hessian blocks in place: no two share a
-  /// free vertex, so no two write the same entry, and every entry receives
-  /// its terms in colour order whatever the number of threads; the energy is
-  /// summed as `energy` sums it.  Both through coloured_sum.  `non_positive`,
-  /// when given, receives the number of elements with det J <= 0.
+  /// Energy and gradient (restricted to free unknowns) at P.x, and the PSD
+  /// Hessian there (update_hessian).  `non_positive`, when given, receives
+  /// the number of elements with det J <= 0.
   double assemble(const Untangling_problem<d>& P, double eps, double theta, Eigen::VectorXd& g,
                   std::size_t* non_positive = nullptr)
   {
+    const double F = energy_and_free_gradient(P, P.x.data(), eps, theta, g, non_positive);
+    update_hessian(P, eps, theta);
+    return F;
+  }
+
+  /// The energy pass at x, its gradient restricted to the free unknowns.
+  double energy_and_free_gradient(const Untangling_problem<d>& P, const double* x, double eps, double theta,
+                                  Eigen::VectorXd& g, std::size_t* non_positive = nullptr)
+  {
+    vertex_gradient_.resize(P.x.size());
+    const double F = energy<d>(P, x, eps, theta, vertex_gradient_.data(), non_positive);
+    for_each_chunk(P.number_of_vertices, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v) {
+        const int f = pattern_.free_index(v);
+        if(f >= 0)
+          for(int c = 0; c < d; ++c) g[d * f + c] = vertex_gradient_[d * v + c];
+      }
+    });
+    return F;
+  }
+
+  /// The PSD Hessian at P.x, as the sum of the element Hessians in the cache.
+  ///
+  /// An element whose Jacobian and determinant moved by less than
+  /// reuse_tolerance since its Hessian was last computed (at this eps) keeps
+  /// that Hessian: it is only the preconditioner, the quasi-Newton
+  /// corrections and the exact gradient do the rest.  Projecting one costs a
+  /// signed SVD and a 3 x 3 eigen-solve, 20 energy passes for a mesh.
+  ///
+  /// H then only receives the change of the elements recomputed (a fifth to
+  /// a quarter of them once the map is valid, on the CuboidBlocks).  Summing
+  /// every cached Hessian again (78 doubles per tetrahedron read from memory
+  /// and scattered), with the energy and gradient computed element by
+  /// element on the side, took 17 % of s08c's run; what is left, 8 %.  At a
+  /// new eps (or theta) every element is recomputed and H summed afresh, so
+  /// the changes' rounding only accumulates within one eps: 1e-13 to 3e-12
+  /// of |H| after the hundreds of updates of s08c's and i02c's stage 2 (H is
+  /// only the preconditioner).
+  ///
+  /// Colour by colour, the elements of one colour run in parallel chunks and
+  /// add their Hessian blocks in place: no two share a free vertex, so no
+  /// two write the same entry, and every entry receives its terms in colour
+  /// order whatever the number of threads (through coloured_sum).
+  void update_hessian(const Untangling_problem<d>& P, double eps, double theta)
+  {
     pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
-    std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
-    g.setZero();
-    const Simplex_energy<d> f{theta, eps};
     if(cache_.size() != P.elements.size() || cache_eps_ != eps || cache_theta_ != theta) {
-      cache_.assign(P.elements.size(), Element_hessian());
+      std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
+      cache_.assign(P.elements.size(), Element_key());
+      hessians_.resize(P.elements.size());
       cache_eps_ = eps;
       cache_theta_ = theta;
     }
-    std::atomic<std::size_t> non_positive_elements{0};
-    const double F = coloured_sum(P, [&](std::size_t k) {
+    const Simplex_energy<d> f{theta, eps};
+    coloured_sum(P, [&](std::size_t k) {
       const auto J = jacobian(P, P.x.data(), k);
-      const auto A = f.partials(J, true);
-      if(!(A.det > 0)) ++non_positive_elements;
-      const double w = P.weights[k];
-      const auto& G = P.gradient_operators[k];
-      Eigen::Matrix<double, d, d + 1> ge;
-      vertex_gradient<d>(J.data(), A.C.data(), A.s, A.D, w, G.data(), ge.data());
-      for(int a = 0; a <= d; ++a) {
-        const int fa = pattern_.free_index(P.elements[k][a]);
-        if(fa >= 0) g.template segment<d>(d * fa) += ge.col(a);
-      }
-      // An element whose Jacobian and determinant moved by less than
-      // reuse_tolerance since its Hessian was last computed (at this eps)
-      // keeps that Hessian: it is only the preconditioner, the quasi-Newton
-      // corrections and the exact gradient do the rest.  Projecting one costs
-      // a signed SVD and a 3 x 3 eigen-solve, 20 energy passes for a mesh.
-      Element_hessian& cached = cache_[k];
-      const double D = A.det;
-      if(!(cached.valid && (J - cached.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * cached.J.squaredNorm()
-           && std::abs(D - cached.D) <= reuse_tolerance * std::abs(cached.D))) {
-        typename Simplex_energy<d>::Vertex_hessian M;
-        Simplex_energy<d>::vertex_hessian(J, A, G, w, M);
-        cached.pack(M);
-        cached.J = J;
-        cached.D = D;
-        cached.valid = true;
-      }
-      Eigen::Matrix<double, d, d> block;
-      for(int a = 0; a <= d; ++a)
-        for(int b = 0; b <= a; ++b) {
-          for(int c = 0; c < d; ++c)
-            for(int r = 0; r < d; ++r)   // (a diagonal block mirrors its lower triangle)
-              block(r, c) = a > b || r >= c ? cached.entry(d * a + r, d * b + c) : cached.entry(d * a + c, d * b + r);
-          pattern_.add(k, a, b, block);
+      Eigen::Matrix<double, d, d> C;
+      const double D = determinant_and_cofactor<d>(J.data(), C.data());   // (as partials computes it)
+      Element_key& key = cache_[k];
+      if(key.valid && (J - key.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * key.J.squaredNorm()
+         && std::abs(D - key.D) <= reuse_tolerance * std::abs(key.D))
+        return 0.;
+      Packed_hessian& cached = hessians_[k];
+#if defined(__GNUC__)
+      // (read below, after the projection: a miss there stalled the assembly)
+      for(std::size_t line = 0; line < sizeof(Packed_hessian); line += 64)
+        __builtin_prefetch(reinterpret_cast<const char*>(cached.data()) + line, 1);
+#endif
+      typename Simplex_energy<d>::Vertex_hessian M;
+      Simplex_energy<d>::vertex_hessian(J, f.partials(J, true), P.gradient_operators[k], P.weights[k], M);
+      Packed_hessian added;   // what H receives: M, or its change
+      const bool replaces = key.valid;
+      std::size_t i = 0;
+      for(int col = 0; col < n; ++col)
+        for(int row = col; row < n; ++row, ++i) {
+          const double now = M(row, col);
+          added[i] = replaces ? now - cached[i] : now;
+          cached[i] = now;
         }
-      return w * A.f;
+      add_element_hessian(k, added);
+      key.J = J;
+      key.D = D;
+      key.valid = true;
+      return 0.;
     });
-    if(non_positive != nullptr) *non_positive = non_positive_elements;
-    return F;
   }
 
 private:
@@ -699,30 +720,37 @@ private:
 #endif
   }
 
+  /// Adds the packed lower triangle of an element's vertex Hessian (see
+  /// update_hessian) to H, block by block.
+  void add_element_hessian(std::size_t k, const Packed_hessian& lower)
+  {
+    // (row, col) of the vertex Hessian, row >= col, column by column
+    auto entry = [&lower](int row, int col) { return lower[col * (2 * n - col + 1) / 2 + row - col]; };
+    Eigen::Matrix<double, d, d> block;
+    for(int a = 0; a <= d; ++a)
+      for(int b = 0; b <= a; ++b) {
+        for(int c = 0; c < d; ++c)
+          for(int r = 0; r < d; ++r)   // (a diagonal block mirrors its lower triangle)
+            block(r, c) = a > b || r >= c ? entry(d * a + r, d * b + c) : entry(d * a + c, d * b + r);
+        pattern_.add(k, a, b, block);
+      }
+  }
+
   Hessian_pattern<d> pattern_;
   std::unique_ptr<Factorization> factorization_;
   std::vector<Eigen::Index> diagonal_position_;   // of each diagonal entry in the values of H
   double factorization_flops_ = -1;
-  /// Where an element's Hessian was last computed, and that Hessian.
-  struct Element_hessian
+  std::vector<double> vertex_gradient_;           // the energy pass's, every vertex
+  /// Where an element's Hessian was last computed (kept apart from the
+  /// Hessians, which update_hessian reads only for the elements it recomputes).
+  struct Element_key
   {
-    static constexpr int n = d * (d + 1);
     Eigen::Matrix<double, d, d> J;
     double D = 0;
-    std::array<double, n * (n + 1) / 2> lower;   // of the vertex Hessian, column by column: all its users read
     bool valid = false;
-
-    void pack(const typename Simplex_energy<d>::Vertex_hessian& M)
-    {
-      double* entry = lower.data();
-      for(int col = 0; col < n; ++col)
-        for(int row = col; row < n; ++row) *entry++ = M(row, col);
-    }
-
-    /// (row, col) of the vertex Hessian, row >= col
-    double entry(int row, int col) const { return lower[col * (2 * n - col + 1) / 2 + row - col]; }
   };
-  std::vector<Element_hessian> cache_;
+  std::vector<Element_key> cache_;
+  std::vector<Packed_hessian> hessians_;          // per element, as in the assembled H
   double cache_eps_ = -1, cache_theta_ = -1;
   static constexpr double reuse_tolerance = 3e-2;   // (1e-3: no gain; 1e-1: no better)
 };
