@@ -15,18 +15,35 @@
 #include <boost/property_map/function_property_map.hpp>
 
 #include <cstdlib>
+#include <exception>
 #include <iostream>
+#include <string>
 #include <vector>
 
 using Point_3 = CGAL::Simple_cartesian<double>::Point_3;
 namespace MU = CGAL::Mesh_untangling;
 
-int main(int argc, char** argv)
+/// Argument `i` as a number, or `otherwise` when it is not given; throws,
+/// naming the argument, when it is not a number.
+static double number_argument(int argc, char** argv, int i, double otherwise)
 {
+  if(argc <= i) return otherwise;
+  const std::string text = argv[i];
+  std::size_t used = 0;
+  double value = 0;
+  try { value = std::stod(text, &used); } catch(const std::exception&) { used = 0; }
+  if(used == 0 || used != text.size())
+    throw std::invalid_argument("argument " + std::to_string(i) + " ('" + text + "') is not a number");
+  return value;
+}
+
+static int run(int argc, char** argv)
+{
+  if(argc > 4) throw std::invalid_argument("at most three arguments, not " + std::to_string(argc - 1));
   Mesh_untangling_tools::Cavities_options options;
-  options.mesh_size = argc > 1 ? std::atof(argv[1]) : 0.6;
-  options.rotation_degrees = argc > 2 ? std::atof(argv[2]) : 135;
-  const double seconds = argc > 3 ? std::atof(argv[3]) : 900;
+  options.mesh_size = number_argument(argc, argv, 1, 0.6);
+  options.rotation_degrees = number_argument(argc, argv, 2, 135);
+  const double seconds = number_argument(argc, argv, 3, 900);
   const auto problem = Mesh_untangling_tools::make_cavities_problem(options);
 
   std::vector<Point_3> rest, points;
@@ -54,4 +71,19 @@ int main(int argc, char** argv)
     if(!published) ok = r.is_locally_invertible();
   }
   return ok ? 0 : 1;
+}
+
+int main(int argc, char** argv)
+{
+  const char* usage = "usage: untangle_cavities [MESH_SIZE [DEGREES [SECONDS]]]   (default 0.6 135 900)\n";
+  if(argc > 1 && (std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help")) {
+    std::cout << usage;
+    return 0;
+  }
+  try {
+    return run(argc, argv);
+  } catch(const std::exception& e) {
+    std::cerr << "untangle_cavities: " << e.what() << "\n" << usage;
+    return 2;
+  }
 }
