@@ -79,6 +79,20 @@ constexpr std::size_t halving_floor = 64;
 constexpr double hand_over_above_flops = 1e9;
 constexpr double hand_over_above_flops_per_element = 4000;
 
+/// Below the hand-over, Solver::AUTOMATIC still tries the published scheme
+/// first, for lbfgs_trial_evaluations at most, when a factorization costs
+/// more than lbfgs_trial_above_flops_per_element (about 20 energy passes):
+/// the cost of a factorization does not tell an easy mesh from a hard one.
+/// On perturbed 2D grids of 20,000 to 80,000 triangles (4,000 to 9,000
+/// flops per element, under 1e9 in all) L-BFGS settles in about 100
+/// evaluations, where Newton took 20 to 24 times as long; the small hard
+/// meshes that need Newton (the rotated cavities, 40,000 flops per element)
+/// lose the trial's evaluations, about one factorization's worth; the data
+/// sets (600 to 1,100 flops per element) never try.  A trial that does not
+/// settle on a valid map is forgotten: Newton starts from the input.
+constexpr double lbfgs_trial_above_flops_per_element = 2000;
+constexpr std::size_t lbfgs_trial_evaluations = 250;
+
 template <int d>
 double default_theta() { return d == 2 ? 1. / 128 : 1. / 2; }
 
@@ -147,6 +161,43 @@ public:
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   bool out_of_time() const { return seconds() > options_.max_seconds; }
 
+  /// Whether Solver::AUTOMATIC, about to run Newton on P, tries the
+  /// published scheme first (see lbfgs_trial_above_flops_per_element).
+  bool tries_lbfgs_first(const Untangling_problem<d>& P)
+  {
+    if(options_.solver != Solver::AUTOMATIC || P.elements.empty()) return false;
+    const double flops = predicted_flops(P);
+    if(!(flops > lbfgs_trial_above_flops_per_element * P.elements.size())) return false;
+    if(flops <= hand_over_limit(P)) return true;                       // Newton's, but dear
+    if(flops > metis_gain_at_most * hand_over_limit(P)) return false;  // run() hands over
+    return newton_solver(P) != nullptr;   // the full analysis decides whether to hand over
+  }
+
+  /// Stage 0 with the published scheme, for lbfgs_trial_evaluations at
+  /// most.  True when it settled on a map that `locally_invertible` accepts
+  /// (the run is then L-BFGS's); otherwise the solver is Newton again and
+  /// P.x is the caller's to restore.  Positive determinants are not enough:
+  /// the published scheme can settle in a k-covering (the rotated cavities)
+  /// that Newton, started afresh, may avoid.
+  template <class Map_test>
+  bool published_trial(Untangling_problem<d>& P, Eps_loop_outcome& out, const Map_test& locally_invertible)
+  {
+    const double flops = predicted_flops(P);
+    solver_ = Solver::LBFGS;
+    trial_evaluations_left_ = lbfgs_trial_evaluations;
+    out = run(P, 0, Stall_test::COUNT_STANDS);
+    trial_evaluations_left_ = no_trial;
+    if(!out.stopped && !out.stalled && !out.numerical_failure &&
+       determinant_summary(P, P.x.data()).non_positive == 0 && locally_invertible()) {
+      result_.solver = to_string(Solver::LBFGS) + " (tried first: a Newton factorization would cost about " +
+                       std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element)";
+      return true;
+    }
+    solver_ = Solver::NEWTON;
+    out = Eps_loop_outcome();
+    return false;
+  }
+
   /// Partial minimizations of F(., eps) from P.x until the energy settles
   /// with every element positive, or until `stall` gives up.  With Eps_loop_goal::VALID_MAP, stops at the
   /// first valid map instead of polishing it toward targets that the next
@@ -180,7 +231,7 @@ public:
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? 1e-6 : 1e-4)
                : LBFGS_solver<d>(lbfgs_algebra()).minimize(P, eps, theta_, inner_iterations(valid),
-                                                           [this] { return out_of_time(); });
+                                                           [this] { return out_of_time() || trial_spent(); });
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
@@ -211,7 +262,7 @@ public:
       // it helps: the floor keeps the problem numerically solvable.
       eps = newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
                    : std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon);
-      if(out_of_time()) { out.stopped = true; break; }
+      if(out_of_time() || trial_evaluations_left_ == 0) { out.stopped = true; break; }
     }
     return out;
   }
@@ -231,8 +282,8 @@ private:
     if(solver_ != Solver::NEWTON) return nullptr;
     if(newton_problem_ != &P) {
       const bool automatic = options_.solver == Solver::AUTOMATIC;
-      const double limit = std::max(hand_over_above_flops, hand_over_above_flops_per_element * P.elements.size());
-      const double predicted = automatic ? predicted_factorization_flops(P) : -1;
+      const double limit = hand_over_limit(P);
+      const double predicted = automatic ? predicted_flops(P) : -1;
       // The prediction uses AMD alone; METIS, tried by the full analysis,
       // has divided AMD's flops by up to 4 on our problems (2D grids).
       if(predicted > metis_gain_at_most * limit) return hand_over(P, predicted);
@@ -241,6 +292,21 @@ private:
       if(automatic && newton_->factorization_flops() > limit) return hand_over(P, newton_->factorization_flops());
     }
     return newton_.get();
+  }
+
+  double hand_over_limit(const Untangling_problem<d>& P) const
+  {
+    return std::max(hand_over_above_flops, hand_over_above_flops_per_element * P.elements.size());
+  }
+
+  /// predicted_factorization_flops(P), computed once per problem.
+  double predicted_flops(const Untangling_problem<d>& P)
+  {
+    if(predicted_problem_ != &P) {
+      predicted_flops_ = predicted_factorization_flops(P);
+      predicted_problem_ = &P;
+    }
+    return predicted_flops_;
   }
 
   /// Solver::AUTOMATIC's switch to L-BFGS, for good: a factorization would cost `flops`.
@@ -271,6 +337,18 @@ private:
     return valid ? 100 : 6;
   }
 
+  /// Asked before every evaluation of the published trial's inner solves:
+  /// whether its budget is spent (counting this evaluation).
+  bool trial_spent()
+  {
+    if(trial_evaluations_left_ == no_trial) return false;
+    if(trial_evaluations_left_ == 0) return true;
+    --trial_evaluations_left_;
+    return false;
+  }
+
+  static constexpr std::size_t no_trial = std::numeric_limits<std::size_t>::max();
+  std::size_t trial_evaluations_left_ = no_trial;
   const Untangling_options& options_;
   const double theta_;
   Untangling_result& result_;
@@ -279,6 +357,8 @@ private:
   Solver solver_;
   std::unique_ptr<Newton_solver<d>> newton_;
   const Untangling_problem<d>* newton_problem_ = nullptr;
+  const Untangling_problem<d>* predicted_problem_ = nullptr;
+  double predicted_flops_ = -1;
 };
 
 /// The same problem with a regular target of the same orientation for
@@ -358,6 +438,15 @@ Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const st
   });
 }
 
+/// Writes P's free vertices into `in`, in the user's coordinates; the fixed
+/// ones keep their exact input values.
+template <int d>
+void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>& in)
+{
+  for(std::size_t v = 0; v < in.positions.size(); ++v)
+    if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
+}
+
 /// Untangles `in.positions` in place, directly from the given map (free
 /// vertices only: fixed ones are never written, so they keep their
 /// coordinates bit for bit).
@@ -367,7 +456,9 @@ Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const st
 /// mesh alone; `phantoms_used`, when given, receives them (phantom vertices
 /// at their final positions).
 ///
-/// Stage 0 runs the published scheme with the given targets.  When it stalls
+/// Stage 0 runs the published scheme with the given targets; when a Newton
+/// factorization is dear, with the published L-BFGS solver first
+/// (Eps_loop::tries_lbfgs_first).  When it stalls
 /// (badly shaped targets can hold a few elements inverted forever), stage 1
 /// untangles toward regular targets from where stage 0 stopped, shaking the
 /// vertices of the elements it cannot untangle when it stalls in turn (a few
@@ -408,8 +499,18 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result);
   const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
-  Eps_loop_outcome outcome =
-    loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
+  Eps_loop_outcome outcome;
+  bool settled_by_trial = false;
+  if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
+    const std::vector<double> start = P.x;
+    settled_by_trial = loop.published_trial(P, outcome, [&] {
+      hand_back_free_vertices(P, in);
+      return check_mesh<d>(in, P.reference_orientation, is_fixed).is_locally_invertible();
+    });
+    if(!settled_by_trial) P.x = start;
+  }
+  if(!settled_by_trial)
+    outcome = loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
   if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
     // with given targets, stage 2 takes over from the first valid map
@@ -436,9 +537,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   result.min_scaled_det_after = summary.min_det;
   measure_quality(P, result);
 
-  // Hand back the free vertices only.
-  for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
+  hand_back_free_vertices(P, in);
 
   const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
   if(phantoms_used && in.phantom_elements > 0) {   // (without phantoms, targets may be empty)
