@@ -16,7 +16,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
@@ -277,6 +280,7 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["final_epsilon"] = r.final_epsilon;
   j["continuation"] = args.continuation;
   j["continuation_steps"] = r.continuation_steps;
+  j["input_returned"] = r.input_returned;
   j["outer_iterations"] = r.outer_iterations;
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
@@ -370,6 +374,8 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                  verdict.input_defects, r.number_of_phantom_elements, r.seconds);
     if(r.continuation_steps > 0)
       std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible\n", r.continuation_steps);
+    if(r.input_returned)
+      std::fprintf(stderr, "the run ended with more defects than its input: the input map is written unchanged\n");
     std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
                  mesh.simplex_size == 3 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
                  run.checks.boundary_after.intersecting_pairs);
@@ -406,6 +412,26 @@ int run(const Arguments& args)
   return verdict.locally_invertible ? 0 : 1;
 }
 
+// CLI11's PositiveNumber and NonNegativeNumber state their range as "0.000000
+// to" a 309-digit number, and accept 0.5 for a count: say what is wanted.
+const CLI::Validator whole_number_from_1(
+  [](std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(text.c_str(), &end, 10);
+    const bool whole = end != text.c_str() && *end == '\0' && errno == 0;
+    return whole && value >= 1 ? std::string() : "must be a whole number, 1 or more, not '" + text + "'";
+  },
+  "INT >= 1");
+const CLI::Validator seconds_from_0(
+  [](std::string& text) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    const bool number = end != text.c_str() && *end == '\0' && !std::isnan(value);
+    return number && value >= 0 ? std::string() : "must be a number of seconds, 0 or more, not '" + text + "'";
+  },
+  "SECONDS >= 0");
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -426,8 +452,8 @@ int main(int argc, char** argv)
     ->check(CLI::IsMember({"auto", "newton", "lbfgs"}));
   app.add_option("--theta", args.theta, "size/shape trade-off in [0, 1]; default 1/128 (2D), 1/2 (3D)")
     ->check(CLI::Range(0., 1.));
-  app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(CLI::PositiveNumber);
-  app.add_option("--time-limit", args.time_limit, "seconds, checked after each eps step")->check(CLI::NonNegativeNumber);
+  app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(whole_number_from_1);
+  app.add_option("--time-limit", args.time_limit, "seconds, checked after each eps step")->check(seconds_from_0);
   app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
                  "projected on its best-fit plane; the surface is the rest)")
     ->check(CLI::IsMember({"given", "project"}));
@@ -439,7 +465,7 @@ int main(int argc, char** argv)
                  "'never', 'always'")
     ->check(CLI::IsMember({"auto", "never", "always"}));
   app.add_option("--continuation-steps", args.continuation_steps, "equal steps the continuation starts with "
-                 "(a failed step is halved)")->check(CLI::PositiveNumber);
+                 "(a failed step is halved)")->check(whole_number_from_1);
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");

@@ -411,7 +411,11 @@ fails unknown_output_extension "out\\.ply: unsupported output extension" square.
 fails unknown_solver 'solver.*foo' square.input --solver foo
 fails theta_too_big 'theta.*2' square.input --theta 2
 fails theta_negative 'theta' square.input --theta -0.5
-fails zero_iterations 'max-iterations' square.input --max-iterations 0
+fails zero_iterations "max-iterations: must be a whole number, 1 or more, not '0'" square.input --max-iterations 0
+fails half_iterations "max-iterations: must be a whole number, 1 or more, not '2\\.5'" square.input --max-iterations 2.5
+fails negative_steps "continuation-steps: must be a whole number, 1 or more, not '-3'" square.input --continuation-steps -3
+fails negative_time "time-limit: must be a number of seconds, 0 or more, not '-1'" square.input --time-limit -1
+fails word_time "time-limit: must be a number of seconds, 0 or more, not 'soon'" square.input --time-limit soon
 fails zero_threads 'threads' square.input --threads 0
 fails word_threads 'threads' square.input --threads many
 fails fixed_and_boundary 'fixed.*fix-boundary|fix-boundary.*fixed' square.input --fixed x.txt --fix-boundary
@@ -629,6 +633,30 @@ if [ -n "$DATA" ] && [ -f "$DATA/tlc-format/sea-free51.input" ]; then
     --continuation always --continuation-steps 2 -q
   check "sea-free51 --continuation always: exit 0" rc_is sea_always 0
   check "sea-free51 --continuation always: at least 2 steps" json_at_least sea_always.json continuation_steps 2
+fi
+
+# A failed run never hands back a map worse than its input: one eps step
+# leaves CuboidBlocks rockerarm 344 with about 1,300 inverted tets, more than
+# the 502 it came with, so the input is written instead, unchanged (every
+# coordinate the same double).  One step of the published scheme leaves
+# fewer (501): that result is kept.
+rocker="$DATA/cuboidblocks/rockerarm.hexex_block344"
+if [ -n "$DATA" ] && [ -f "$rocker/parameter.vtk" ]; then
+  vtk_points() { awk '$1 == "POINTS" { on = 1; next } on && /^[A-Z_]+ / { exit } on { for(i = 1; i <= NF; ++i) printf "%.17g\n", $i }' "$1"; }
+  run worse "$rocker/parameter.vtk" --rest "$rocker/object.vtk" --fixed "$rocker/handles.txt" --max-iterations 1 \
+    -o worse.vtk --report worse.json
+  check "worse than its input: exit 1" rc_is worse 1
+  check "worse than its input: input_returned" json_is worse.json input_returned true
+  check "worse than its input: 502 inverted before" json_is worse.json inverted_before 502
+  check "worse than its input: 502 inverted after" json_is worse.json inverted_after 502
+  check "worse than its input: says so" err_has worse 'more defects than its input: the input map is written unchanged'
+  check "worse than its input: the input's points" \
+    [ "$(vtk_points worse.vtk | wc -l)" = 19272 ] && [ "$(vtk_points worse.vtk)" = "$(vtk_points "$rocker/parameter.vtk")" ]
+  run better "$rocker/parameter.vtk" --rest "$rocker/object.vtk" --fixed "$rocker/handles.txt" --max-iterations 1 \
+    --solver lbfgs -o better.vtk --report better.json -q
+  check "one published step: exit 1" rc_is better 1
+  check "one published step: fewer inverted than the input, kept" \
+    json_is better.json input_returned false && [ "$(json_get better.json inverted_after)" -lt 502 ]
 fi
 
 #
