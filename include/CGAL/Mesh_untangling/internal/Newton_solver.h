@@ -14,6 +14,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
@@ -405,6 +406,8 @@ class Newton_solver
   static constexpr int n = d * (d + 1);   // vertex coordinates of an element
   /// The lower triangle of an element's vertex Hessian, column by column.
   using Packed_hessian = std::array<double, n * (n + 1) / 2>;
+  /// Where entry (row, col), row >= col, of the vertex Hessian sits in a Packed_hessian.
+  static constexpr int packed_index(int row, int col) { return col * (2 * n - col + 1) / 2 + row - col; }
 
 public:
   /// Builds the Hessian's pattern and its symbolic factorization, whose
@@ -642,9 +645,10 @@ public:
       Simplex_energy<d>::vertex_hessian(J, f.partials(J, true), P.gradient_operators[k], P.weights[k], M);
       Packed_hessian added;   // what H receives: M, or its change
       const bool replaces = key.valid;
-      std::size_t i = 0;
+      int i = 0;   // (packed_index(row, col), counted)
       for(int col = 0; col < n; ++col)
         for(int row = col; row < n; ++row, ++i) {
+          CGAL_assertion(i == packed_index(row, col));
           const double now = M(row, col);
           added[i] = replaces ? now - cached[i] : now;
           cached[i] = now;
@@ -724,8 +728,7 @@ private:
   /// update_hessian) to H, block by block.
   void add_element_hessian(std::size_t k, const Packed_hessian& lower)
   {
-    // (row, col) of the vertex Hessian, row >= col, column by column
-    auto entry = [&lower](int row, int col) { return lower[col * (2 * n - col + 1) / 2 + row - col]; };
+    auto entry = [&lower](int row, int col) { return lower[packed_index(row, col)]; };
     Eigen::Matrix<double, d, d> block;
     for(int a = 0; a <= d; ++a)
       for(int b = 0; b <= a; ++b) {

@@ -95,11 +95,11 @@ constexpr std::size_t lbfgs_trial_evaluations = 250;
 
 /// From a valid map, Newton's solves end when the quadratic model predicts
 /// a relative decrease below polish_tolerance, the tolerance of the
-/// published scheme's test for a settled energy (energy_settled).  A tenth of it cost the
-/// CuboidBlocks 15 to 27 % more time for 0.01 to 0.15 % less energy.  With
-/// a free boundary the tolerance is free_boundary_polish_tolerance: the soft
-/// modes there (rigid motions, scaling) are left visibly short of the
-/// minimum by the looser test.
+/// published scheme's test for a settled energy (energy_settled).  A tenth
+/// of it cost the solved CuboidBlocks 8 to 38 % more energy evaluations for
+/// 0.01 to 0.15 % less energy.  With a free boundary the tolerance is
+/// free_boundary_polish_tolerance: the soft modes there (rigid motions,
+/// scaling) are left visibly short of the minimum by the looser test.
 constexpr double polish_tolerance = 1e-5;
 constexpr double free_boundary_polish_tolerance = 1e-6;
 
