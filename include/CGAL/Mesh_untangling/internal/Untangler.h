@@ -86,10 +86,10 @@ constexpr double hand_over_above_flops_per_element = 4000;
 /// On perturbed 2D grids of 20,000 to 80,000 triangles (4,000 to 9,000
 /// flops per element, under 1e9 in all) L-BFGS settles in about 100
 /// evaluations, where Newton took 20 to 24 times as long; the small hard
-/// meshes that need Newton (the rotated cavities, 40,000 flops per element)
-/// lose the trial's evaluations, about one factorization's worth; the data
-/// sets (600 to 1,100 flops per element) never try.  A trial that does not
-/// settle on a valid map is forgotten: Newton starts from the input.
+/// meshes that need Newton (the rotated cavities, 10,000 flops per element)
+/// lose the trial's evaluations; the data sets (600 to 1,100 flops per
+/// element) never try.  A trial that does not settle on a locally
+/// invertible map is forgotten: Newton starts from the input.
 constexpr double lbfgs_trial_above_flops_per_element = 2000;
 constexpr std::size_t lbfgs_trial_evaluations = 250;
 
