@@ -60,9 +60,10 @@ struct Untangling_result
   std::size_t overwound_vertices_after = 0; ///< vertex stars wound more than once (2D angle, 3D solid angle)
   std::size_t overwound_edges_after = 0;    ///< 3D edge fans wound more than once
   std::size_t input_defects = 0;       ///< defects that fixed vertices alone determine: not repairable, not a failure
-  /// the run failed with more defects (inverted elements first, then
-  /// over-wound stars) than the input had: the input map was handed back
-  /// unchanged, and the figures "after" are the input's
+  /// the run failed, and the least tangled map it went through had more
+  /// defects (inverted elements first, then over-wound stars) than the
+  /// input: the input map was handed back unchanged, and the figures
+  /// "after" are the input's
   bool input_returned = false;
 
   double min_scaled_det_before = 0;    ///< min over elements of det J (J relative to the target, targets scaled to the map's size)
