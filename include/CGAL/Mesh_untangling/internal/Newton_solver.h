@@ -713,6 +713,10 @@ private:
       // matrix is reported as such.
       c.supernodal = CHOLMOD_AUTO;
       c.final_ll = 1;
+      // An indefinite matrix is expected (factorize() then shifts it), and
+      // reported through info(): without this CHOLMOD prints a warning on
+      // stderr for each such factorization, hundreds on a hard problem.
+      c.print = 0;
       factorization_->analyzePattern(H);
       factorization_flops_ = c.fl;
       if(factorization_flops_ > metis_gain_at_most * flops_limit) break;
