@@ -6,14 +6,70 @@
 // (6 N^3 tetrahedra) whose interior vertices are moved at random by up to
 // AMPLITUDE grid cells, boundary fixed.  OUTPUT is a Du et al. .input file
 // (rest, tangled map and fixed vertices in one file) or any mesh format.
+// The other formats cannot list fixed vertices (and .off, .vtk and .mesh
+// hold one geometry): beside OUTPUT = NAME.EXT go NAME-fixed.txt and, where
+// needed, the rest grid NAME-rest.EXT, so that every format gives the same
+// problem; the command that untangles it is printed.
 #include "generators.h"
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
+
+namespace {
+
+namespace IO = CGAL::Mesh_untangling::IO;
+
+/// NAME-suffix beside OUTPUT = NAME.EXT.
+std::string companion(const std::string& output, const std::string& suffix)
+{
+  std::filesystem::path path(output);
+  return (path.parent_path() / (path.stem().string() + suffix)).string();
+}
+
+/// Writes the mesh and the companions its format needs; all of them or none.
+/// Returns the untangle_mesh arguments that read them back.
+std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
+{
+  const std::string extension = IO::internal::lowercase_extension(output);
+  if(extension == ".input") {
+    IO::write_mesh_file(output, mesh);
+    return "";
+  }
+  std::vector<std::string> written;
+  std::string arguments;
+  try {
+    const std::string fixed = companion(output, "-fixed.txt");
+    IO::write_handles(fixed, mesh.fixed);
+    written.push_back(fixed);
+    arguments += " --fixed " + fixed;
+    if(extension != ".obj") {   // (an .obj holds the rest as its domain)
+      const std::string rest = companion(output, "-rest" + std::filesystem::path(output).extension().string());
+      IO::Mesh_file grid = mesh;
+      grid.map = mesh.rest;
+      grid.map_dimension = mesh.rest_dimension;
+      grid.rest.clear();
+      grid.rest_dimension = 0;
+      IO::write_mesh_file(rest, grid);
+      written.push_back(rest);
+      arguments += " --rest " + rest;
+    }
+    IO::write_mesh_file(output, mesh);
+  } catch(...) {
+    for(const std::string& path : written) std::remove(path.c_str());
+    throw;
+  }
+  return arguments;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -32,13 +88,16 @@ int main(int argc, char** argv)
   }
   auto mesh = shape == "square" ? Mesh_untangling_tools::make_square_grid(n) : Mesh_untangling_tools::make_cube_grid(n);
   Mesh_untangling_tools::perturb_interior(mesh, n, amplitude, static_cast<std::uint32_t>(seed));
+  std::string arguments;
   try {
-    CGAL::Mesh_untangling::IO::write_mesh_file(argv[5], mesh);
-  } catch(const CGAL::Mesh_untangling::IO::Write_error& e) {
+    arguments = write_problem(argv[5], mesh);
+  } catch(const IO::Write_error& e) {
     std::cerr << "make_tangled_mesh: error: " << e.what() << "\n";
     return 2;
   }
   std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() << " "
             << (mesh.simplex_size == 3 ? "triangles" : "tetrahedra") << ", " << mesh.fixed.size() << " fixed\n";
+  if(!arguments.empty())
+    std::cout << "the format cannot list fixed vertices; untangle with: untangle_mesh " << argv[5] << arguments << "\n";
   return 0;
 }

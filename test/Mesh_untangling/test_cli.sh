@@ -138,6 +138,48 @@ map_rows() { awk 'NR == 1 { n = $1 } NR > n + 2 && NR <= 2 * n + 2' "$1"; }
   && "$MAKE" cube 3 1 1 c3.vtk > /dev/null || { echo "FAIL: make_tangled_mesh small samples" >&2; exit 1; }
 check "generated square has 160 handles" [ "$(handle_count square.input)" = 160 ]
 
+# Formats that cannot list fixed vertices get NAME-fixed.txt beside them
+# (and the rest grid NAME-rest.EXT where the format holds one geometry),
+# and the command that reads them back: the same problem in every format.
+mkdir companions && cd companions || exit 1
+"$MAKE" square 6 2 4 g.vtk > g.out 2> g.err; echo $? > g.rc
+check "make_tangled_mesh .vtk: exit 0" rc_is g 0
+check "make_tangled_mesh .vtk: 24 fixed ids in g-fixed.txt" [ "$(wc -l < g-fixed.txt)" = 24 ]
+check "make_tangled_mesh .vtk: vertex 0 fixed" [ "$(head -n 1 g-fixed.txt)" = 0 ]
+check "make_tangled_mesh .vtk: rest grid g-rest.vtk" [ "$(vtk_header g-rest.vtk POINTS)" = 49 ]
+check "make_tangled_mesh .vtk: rest grid point 1 at (1/6, 0)" \
+  [ "$(awk '$1 == "POINTS" { getline; getline; print; exit }' g-rest.vtk)" = "0.16666666666666666 0 0" ]
+run g_rest g-rest.vtk --fixed g-fixed.txt --report g_rest.json -q -o g-rest-out.vtk
+check "make_tangled_mesh .vtk: rest grid not inverted" json_is g_rest.json inverted_before 0
+check "make_tangled_mesh .vtk: prints the command" \
+  grep -Fxq "the format cannot list fixed vertices; untangle with: untangle_mesh g.vtk --fixed g-fixed.txt --rest g-rest.vtk" g.out
+run g_back g.vtk --fixed g-fixed.txt --rest g-rest.vtk --report g.json -q
+check "make_tangled_mesh .vtk read back: exit 0" rc_is g_back 0
+check "make_tangled_mesh .vtk read back: 24 fixed" json_is g.json fixed_vertices 24
+check "make_tangled_mesh .vtk read back: inverted before" json_positive g.json inverted_before
+"$MAKE" square 6 2 4 g.obj > go.out 2> /dev/null
+check "make_tangled_mesh .obj: no rest file (the domain is the rest)" [ ! -e g-rest.obj ]
+check "make_tangled_mesh .obj: prints the command" \
+  grep -Fxq "the format cannot list fixed vertices; untangle with: untangle_mesh g.obj --fixed g-fixed.txt" go.out
+"$MAKE" square 6 2 4 g.input > gi.out 2> /dev/null
+check "make_tangled_mesh .input: no companion line" [ "$(wc -l < gi.out)" = 1 ]
+# The .vtk without its fixed-vertex file: a free boundary.  Without phantoms
+# Newton meets indefinite Hessians there, which CHOLMOD reported on stdout
+# (217 lines) until its printing was turned off.
+"$MAKE" square 10 2 1 free.vtk > /dev/null 2>&1
+run free free.vtk --no-phantoms -q -o free-out.vtk --report free.json
+check "free boundary without phantoms: exit 0" rc_is free 0
+check "free boundary without phantoms: no fixed vertex" json_is free.json fixed_vertices 0
+check "free boundary without phantoms: nothing on stdout" empty free.out
+check "free boundary without phantoms: nothing on stderr (-q)" empty free.err
+mkdir blocked.vtk
+"$MAKE" square 6 2 4 blocked.vtk > blocked.out 2> blocked.err; echo $? > blocked.rc
+check "make_tangled_mesh unwritable output: exit 2" rc_is blocked 2
+check "make_tangled_mesh unwritable output: message names it" err_has blocked 'blocked\.vtk'
+check "make_tangled_mesh unwritable output: no fixed-vertex file left" [ ! -e blocked-fixed.txt ]
+check "make_tangled_mesh unwritable output: no rest file left" [ ! -e blocked-rest.vtk ]
+cd .. || exit 1
+
 #
 # Good runs
 #
