@@ -15,6 +15,7 @@
 // map and fixed vertices), for untangle_mesh.
 // e.g. benchmark_cavities --degrees 135 --time-limit 900 1.0 0.6 0.4
 
+#include "cases.h"
 #include "cavities.h"
 #include "untangle_mesh_file.h"
 
@@ -22,8 +23,6 @@
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <string>
 #include <vector>
@@ -45,6 +44,14 @@ const Mode modes[] = {{"published scheme", false, MU::Continuation::NEVER},
                       {"continuation", false, MU::Continuation::ALWAYS},
                       {"default (phantoms, continuation)", true, MU::Continuation::AUTOMATIC}};
 
+/// Exit status 2 with `what` (and the usage) on stderr.
+int bad_arguments(const std::string& what)
+{
+  std::fprintf(stderr, "benchmark_cavities: %s\nusage: benchmark_cavities [--degrees D] [--time-limit SECONDS] "
+                       "[--write DIR] SIZE...   (SIZE in (0, 1])\n", what.c_str());
+  return 2;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -54,13 +61,25 @@ int main(int argc, char** argv)
   std::string directory;
   std::vector<double> sizes;
   for(int i = 1; i < argc; ++i) {
-    if(!std::strcmp(argv[i], "--degrees") && i + 1 < argc) options.rotation_degrees = std::atof(argv[++i]);
-    else if(!std::strcmp(argv[i], "--time-limit") && i + 1 < argc) seconds = std::atof(argv[++i]);
-    else if(!std::strcmp(argv[i], "--write") && i + 1 < argc) directory = argv[++i];
-    else if(std::atof(argv[i]) > 0) sizes.push_back(std::atof(argv[i]));
-    else {
-      std::fprintf(stderr, "usage: benchmark_cavities [--degrees D] [--time-limit SECONDS] [--write DIR] SIZE...\n");
-      return 2;
+    const std::string argument = argv[i];
+    const bool has_value = i + 1 < argc;
+    if(argument == "--degrees" && has_value) {
+      if(!parse_number(argv[++i], options.rotation_degrees))
+        return bad_arguments("--degrees needs a number, not '" + std::string(argv[i]) + "'");
+    } else if(argument == "--time-limit" && has_value) {
+      if(!parse_number(argv[++i], seconds) || !(seconds > 0))
+        return bad_arguments("--time-limit needs a number of seconds above 0, not '" + std::string(argv[i]) + "'");
+    } else if(argument == "--write" && has_value) {
+      directory = argv[++i];
+    } else if(argument == "--degrees" || argument == "--time-limit" || argument == "--write") {
+      return bad_arguments(argument + " needs a value");
+    } else if(argument.rfind("--", 0) == 0) {
+      return bad_arguments("unknown option '" + argument + "'");
+    } else {
+      double size = 0;
+      if(!parse_number(argument, size) || !(size > 0 && size <= 1))
+        return bad_arguments("'" + argument + "' is not a mesh size in (0, 1]");
+      sizes.push_back(size);
     }
   }
   if(sizes.empty()) sizes = {1.0, 0.7, 0.5};

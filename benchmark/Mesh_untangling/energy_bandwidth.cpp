@@ -136,6 +136,15 @@ int main(int argc, char** argv)
     std::cerr << "energy_bandwidth: no case given\n";
     return 2;
   }
+  // every case named first: a bad one is refused before anything runs
+  std::vector<Case_spec> cases;
+  try {
+    for(const std::string& argument : arguments)
+      for(const Case_spec& c : parse_case(argument)) cases.push_back(c);
+  } catch(const Case_error& e) {
+    std::cerr << "energy_bandwidth: " << e.what() << "\n";
+    return 2;
+  }
   const Thread_limit limit(threads);
   try {
     const double bandwidth = copy_bandwidth();
@@ -144,12 +153,11 @@ int main(int argc, char** argv)
     std::printf("| case | vertices | elements | pass (ms) | bytes/element | bandwidth bound (ms) | pass/bound | ns/element "
                 "| energy only (ms) |\n");
     std::printf("|:--|--:|--:|--:|--:|--:|--:|--:|--:|\n");
-    for(const std::string& argument : arguments)
-      for(const Case_spec& c : parse_case(argument)) {
-        const Problem problem = load(c);
-        if(problem.mesh.simplex_size == 3) measure<2>(problem, c.name, repeat, bandwidth);
-        else measure<3>(problem, c.name, repeat, bandwidth);
-      }
+    for(const Case_spec& c : cases) {
+      const Problem problem = load(c);
+      if(problem.mesh.simplex_size == 3) measure<2>(problem, c.name, repeat, bandwidth);
+      else measure<3>(problem, c.name, repeat, bandwidth);
+    }
   } catch(const std::exception& e) {
     std::cerr << "energy_bandwidth: " << e.what() << "\n";
     return 1;
