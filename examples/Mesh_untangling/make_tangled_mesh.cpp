@@ -34,6 +34,17 @@ std::string companion(const std::string& output, const std::string& suffix)
   return (path.parent_path() / (path.stem().string() + suffix)).string();
 }
 
+/// `path` as one shell word: single-quoted unless it is made of safe characters only.
+std::string shell_word(const std::string& path)
+{
+  const bool safe = !path.empty() && path.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                            "0123456789_-+.,/:@%=") == std::string::npos;
+  if(safe) return path;
+  std::string quoted = "'";
+  for(char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 /// Writes the mesh and the companions its format needs; all of them or none.
 /// Returns the untangle_mesh arguments that read them back.
 std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
@@ -49,7 +60,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
     const std::string fixed = companion(output, "-fixed.txt");
     IO::write_handles(fixed, mesh.fixed);
     written.push_back(fixed);
-    arguments += " --fixed " + fixed;
+    arguments += " --fixed " + shell_word(fixed);
     if(extension != ".obj") {   // (an .obj holds the rest as its domain)
       const std::string rest = companion(output, "-rest" + std::filesystem::path(output).extension().string());
       IO::Mesh_file grid = mesh;
@@ -59,7 +70,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
       grid.rest_dimension = 0;
       IO::write_mesh_file(rest, grid);
       written.push_back(rest);
-      arguments += " --rest " + rest;
+      arguments += " --rest " + shell_word(rest);
     }
     IO::write_mesh_file(output, mesh);
   } catch(...) {
@@ -98,6 +109,6 @@ int main(int argc, char** argv)
   std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() << " "
             << (mesh.simplex_size == 3 ? "triangles" : "tetrahedra") << ", " << mesh.fixed.size() << " fixed\n";
   if(!arguments.empty())
-    std::cout << "the format cannot list fixed vertices; untangle with: untangle_mesh " << argv[5] << arguments << "\n";
+    std::cout << "the format cannot list fixed vertices; untangle with: untangle_mesh " << shell_word(argv[5]) << arguments << "\n";
   return 0;
 }

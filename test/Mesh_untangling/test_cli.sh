@@ -161,6 +161,14 @@ check "make_tangled_mesh .vtk read back: inverted before" json_positive g.json i
 check "make_tangled_mesh .obj: no rest file (the domain is the rest)" [ ! -e g-rest.obj ]
 check "make_tangled_mesh .obj: prints the command" \
   grep -Fxq "the format cannot list fixed vertices; untangle with: untangle_mesh g.obj --fixed g-fixed.txt" go.out
+# The printed command is one a shell runs as printed, whatever the path.
+mkdir "odd dir"
+"$MAKE" square 6 2 4 "odd dir/it's.vtk" > odd.out 2> /dev/null
+odd_command=$(sed -n 's/^the format cannot list fixed vertices; untangle with: untangle_mesh //p' odd.out)
+check "make_tangled_mesh odd path: prints a command" [ -n "$odd_command" ]
+eval "\"\$UNTANGLE\" -q $odd_command -o odd-out.vtk" > odd_run.out 2> odd_run.err
+odd_rc=$?
+check "make_tangled_mesh odd path: the printed command untangles it" [ "$odd_rc" = 0 ]
 "$MAKE" square 6 2 4 g.input > gi.out 2> /dev/null
 check "make_tangled_mesh .input: no companion line" [ "$(wc -l < gi.out)" = 1 ]
 # The .vtk without its fixed-vertex file: a free boundary.  Without phantoms
