@@ -62,17 +62,16 @@ int main(int argc, char** argv)
   std::vector<double> sizes;
   for(int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
-    const bool has_value = i + 1 < argc;
-    if(argument == "--degrees" && has_value) {
+    const bool takes_value = argument == "--degrees" || argument == "--time-limit" || argument == "--write";
+    if(takes_value && i + 1 == argc) return bad_arguments(argument + " needs a value");
+    if(argument == "--degrees") {
       if(!parse_number(argv[++i], options.rotation_degrees))
         return bad_arguments("--degrees needs a number, not '" + std::string(argv[i]) + "'");
-    } else if(argument == "--time-limit" && has_value) {
+    } else if(argument == "--time-limit") {
       if(!parse_number(argv[++i], seconds) || !(seconds > 0))
         return bad_arguments("--time-limit needs a number of seconds above 0, not '" + std::string(argv[i]) + "'");
-    } else if(argument == "--write" && has_value) {
+    } else if(argument == "--write") {
       directory = argv[++i];
-    } else if(argument == "--degrees" || argument == "--time-limit" || argument == "--write") {
-      return bad_arguments(argument + " needs a value");
     } else if(argument.rfind("--", 0) == 0) {
       return bad_arguments("unknown option '" + argument + "'");
     } else {

@@ -715,7 +715,7 @@ private:
       c.final_ll = 1;
       // An indefinite matrix is expected (factorize() then shifts it), and
       // reported through info(): without this CHOLMOD prints a warning on
-      // stderr for each such factorization, hundreds on a hard problem.
+      // stdout for each such factorization, hundreds on a hard problem.
       c.print = 0;
       factorization_->analyzePattern(H);
       factorization_flops_ = c.fl;

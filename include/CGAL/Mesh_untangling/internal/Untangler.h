@@ -285,14 +285,13 @@ public:
   }
 
   /// Puts back in P.x the map with the fewest non-positive elements that a
-  /// step of any stage ended on, when P.x has more; true when it did.  A run
-  /// that ends tangled can have been much closer on its way: joint of the
-  /// CuboidBlocks had 2 non-positive tets after step 40 (stage 1, before a
-  /// shake), and ended with 1,337.
-  bool restore_least_tangled(Untangling_problem<d>& P) const
+  /// step of any stage ended on, when P.x has more (`non_positive`, its
+  /// count); true when it did.  A run that ends tangled can have been much
+  /// closer on its way: joint of the CuboidBlocks had 2 non-positive tets
+  /// after step 40 (stage 1, before a shake), and ended with 1,337.
+  bool restore_least_tangled(Untangling_problem<d>& P, std::size_t non_positive) const
   {
-    if(least_tangled_.empty() || determinant_summary(P, P.x.data()).non_positive <= least_tangled_count_)
-      return false;
+    if(least_tangled_.empty() || non_positive <= least_tangled_count_) return false;
     P.x = least_tangled_;
     return true;
   }
@@ -564,8 +563,11 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
       if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
     }
   }
-  if(loop.restore_least_tangled(P)) outcome.energy = energy<d>(P, P.x.data(), outcome.epsilon, theta);
-  const auto summary = determinant_summary(P, P.x.data());
+  auto summary = determinant_summary(P, P.x.data());
+  if(loop.restore_least_tangled(P, summary.non_positive)) {
+    outcome.energy = energy<d>(P, P.x.data(), outcome.epsilon, theta);
+    summary = determinant_summary(P, P.x.data());
+  }
   result.final_energy = outcome.energy;
   result.final_epsilon = outcome.epsilon;
   result.min_scaled_det_after = summary.min_det;
