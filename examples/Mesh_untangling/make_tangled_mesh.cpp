@@ -6,10 +6,11 @@
 // (6 N^3 tetrahedra) whose interior vertices are moved at random by up to
 // AMPLITUDE grid cells, boundary fixed.  OUTPUT is a Du et al. .input file
 // (rest, tangled map and fixed vertices in one file) or any mesh format.
-// The other formats cannot list fixed vertices (and .off, .vtk and .mesh
-// hold one geometry): beside OUTPUT = NAME.EXT go NAME-fixed.txt and, where
-// needed, the rest grid NAME-rest.EXT, so that every format gives the same
-// problem; the command that untangles it is printed.
+// The others hold less: .off, .vtk and .mesh one geometry, and all but .vtk
+// (its point data 'fixed') no fixed vertices.  Beside OUTPUT = NAME.EXT go
+// what the format cannot hold, NAME-fixed.txt and the rest grid
+// NAME-rest.EXT, so that every format gives the same problem; the command
+// that untangles it is printed.
 #include "generators.h"
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
@@ -57,17 +58,19 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
   std::vector<std::string> written;
   std::string arguments;
   try {
-    const std::string fixed = companion(output, "-fixed.txt");
-    IO::write_handles(fixed, mesh.fixed);
-    written.push_back(fixed);
-    arguments += " --fixed " + shell_word(fixed);
+    if(extension != ".vtk") {   // (a .vtk holds them as point data)
+      const std::string fixed = companion(output, "-fixed.txt");
+      IO::write_handles(fixed, mesh.fixed);
+      written.push_back(fixed);
+      arguments += " --fixed " + shell_word(fixed);
+    }
     if(extension != ".obj") {   // (an .obj holds the rest as its domain)
       const std::string rest = companion(output, "-rest" + std::filesystem::path(output).extension().string());
-      IO::Mesh_file grid = mesh;
+      IO::Mesh_file grid;   // the geometry only
+      grid.simplex_size = mesh.simplex_size;
+      grid.simplices = mesh.simplices;
       grid.map = mesh.rest;
       grid.map_dimension = mesh.rest_dimension;
-      grid.rest.clear();
-      grid.rest_dimension = 0;
       IO::write_mesh_file(rest, grid);
       written.push_back(rest);
       arguments += " --rest " + shell_word(rest);
@@ -109,6 +112,6 @@ int main(int argc, char** argv)
   std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() << " "
             << (mesh.simplex_size == 3 ? "triangles" : "tetrahedra") << ", " << mesh.fixed.size() << " fixed\n";
   if(!arguments.empty())
-    std::cout << "the format cannot list fixed vertices; untangle with: untangle_mesh " << shell_word(argv[5]) << arguments << "\n";
+    std::cout << "untangle the same problem with: untangle_mesh " << shell_word(argv[5]) << arguments << "\n";
   return 0;
 }

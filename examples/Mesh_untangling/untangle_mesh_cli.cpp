@@ -442,7 +442,8 @@ int main(int argc, char** argv)
   app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .input")
     ->required();
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
-  auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based)");
+  auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based; empty: none); default: "
+                               "the handles of an .input file, the 'fixed' point scalar of a .vtk file");
   app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
   app.add_option("-o,--output", args.output, "result (format by extension; .vtk adds per-cell det J, distortions and "
                  "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");

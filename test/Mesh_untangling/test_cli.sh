@@ -138,54 +138,69 @@ map_rows() { awk 'NR == 1 { n = $1 } NR > n + 2 && NR <= 2 * n + 2' "$1"; }
   && "$MAKE" cube 3 1 1 c3.vtk > /dev/null || { echo "FAIL: make_tangled_mesh small samples" >&2; exit 1; }
 check "generated square has 160 handles" [ "$(handle_count square.input)" = 160 ]
 
-# Formats that cannot list fixed vertices get NAME-fixed.txt beside them
-# (and the rest grid NAME-rest.EXT where the format holds one geometry),
-# and the command that reads them back: the same problem in every format.
+# Beside a format that cannot hold the whole problem go what it lacks:
+# NAME-fixed.txt (all but .vtk, whose point data 'fixed' lists them) and the
+# rest grid NAME-rest.EXT (the one-geometry formats), and the command that
+# reads them back: the same problem in every format.
 mkdir companions && cd companions || exit 1
 "$MAKE" square 6 2 4 g.vtk > g.out 2> g.err; echo $? > g.rc
 check "make_tangled_mesh .vtk: exit 0" rc_is g 0
-check "make_tangled_mesh .vtk: 24 fixed ids in g-fixed.txt" [ "$(wc -l < g-fixed.txt)" = 24 ]
-check "make_tangled_mesh .vtk: vertex 0 fixed" [ "$(head -n 1 g-fixed.txt)" = 0 ]
+check "make_tangled_mesh .vtk: 24 fixed flags in g.vtk" [ "$(vtk_sum g.vtk fixed)" = 24 ]
+check "make_tangled_mesh .vtk: vertex 0 flagged" [ "$(vtk_field g.vtk fixed | head -n 1)" = 1 ]
+check "make_tangled_mesh .vtk: no g-fixed.txt" [ ! -e g-fixed.txt ]
 check "make_tangled_mesh .vtk: rest grid g-rest.vtk" [ "$(vtk_header g-rest.vtk POINTS)" = 49 ]
 check "make_tangled_mesh .vtk: rest grid point 1 at (1/6, 0)" \
   [ "$(awk '$1 == "POINTS" { getline; getline; print; exit }' g-rest.vtk)" = "0.16666666666666666 0 0" ]
-run g_rest g-rest.vtk --fixed g-fixed.txt --report g_rest.json -q -o g-rest-out.vtk
+check "make_tangled_mesh .vtk: rest grid without fixed flags" [ "$(vtk_count g-rest.vtk fixed)" = 0 ]
+run g_rest g-rest.vtk --fix-boundary --report g_rest.json -q -o g-rest-out.vtk
 check "make_tangled_mesh .vtk: rest grid not inverted" json_is g_rest.json inverted_before 0
 check "make_tangled_mesh .vtk: prints the command" \
-  grep -Fxq "the format cannot list fixed vertices; untangle with: untangle_mesh g.vtk --fixed g-fixed.txt --rest g-rest.vtk" g.out
-run g_back g.vtk --fixed g-fixed.txt --rest g-rest.vtk --report g.json -q
+  grep -Fxq "untangle the same problem with: untangle_mesh g.vtk --rest g-rest.vtk" g.out
+run g_back g.vtk --rest g-rest.vtk --report g.json -q
 check "make_tangled_mesh .vtk read back: exit 0" rc_is g_back 0
 check "make_tangled_mesh .vtk read back: 24 fixed" json_is g.json fixed_vertices 24
+check "make_tangled_mesh .vtk read back: fixed from the file" json_is g.json fixed '"g.vtk"'
 check "make_tangled_mesh .vtk read back: inverted before" json_positive g.json inverted_before
+"$MAKE" square 6 2 4 g.off > goff.out 2> /dev/null
+check "make_tangled_mesh .off: 24 fixed ids in g-fixed.txt" [ "$(wc -l < g-fixed.txt)" = 24 ]
+check "make_tangled_mesh .off: vertex 0 fixed" [ "$(head -n 1 g-fixed.txt)" = 0 ]
+check "make_tangled_mesh .off: rest grid g-rest.off" [ "$(sed -n 2p g-rest.off)" = "49 72 0" ]
+check "make_tangled_mesh .off: prints the command" \
+  grep -Fxq "untangle the same problem with: untangle_mesh g.off --fixed g-fixed.txt --rest g-rest.off" goff.out
+run g_off g.off --fixed g-fixed.txt --rest g-rest.off --report goff.json -q
+check "make_tangled_mesh .off read back: 24 fixed" json_is goff.json fixed_vertices 24
+check "make_tangled_mesh .off and .vtk: the same problem" \
+  [ "$(json_get goff.json inverted_before)" = "$(json_get g.json inverted_before)" ]
 "$MAKE" square 6 2 4 g.obj > go.out 2> /dev/null
 check "make_tangled_mesh .obj: no rest file (the domain is the rest)" [ ! -e g-rest.obj ]
 check "make_tangled_mesh .obj: prints the command" \
-  grep -Fxq "the format cannot list fixed vertices; untangle with: untangle_mesh g.obj --fixed g-fixed.txt" go.out
+  grep -Fxq "untangle the same problem with: untangle_mesh g.obj --fixed g-fixed.txt" go.out
 # The printed command is one a shell runs as printed, whatever the path.
 mkdir "odd dir"
-"$MAKE" square 6 2 4 "odd dir/it's.vtk" > odd.out 2> /dev/null
-odd_command=$(sed -n 's/^the format cannot list fixed vertices; untangle with: untangle_mesh //p' odd.out)
+"$MAKE" square 6 2 4 "odd dir/it's.off" > odd.out 2> /dev/null
+odd_command=$(sed -n 's/^untangle the same problem with: untangle_mesh //p' odd.out)
 check "make_tangled_mesh odd path: prints a command" [ -n "$odd_command" ]
-eval "\"\$UNTANGLE\" -q $odd_command -o odd-out.vtk" > odd_run.out 2> odd_run.err
+eval "\"\$UNTANGLE\" -q $odd_command -o odd-out.vtk --report odd.json" > odd_run.out 2> odd_run.err
 odd_rc=$?
 check "make_tangled_mesh odd path: the printed command untangles it" [ "$odd_rc" = 0 ]
+check "make_tangled_mesh odd path: with its 24 fixed vertices" json_is odd.json fixed_vertices 24
 "$MAKE" square 6 2 4 g.input > gi.out 2> /dev/null
 check "make_tangled_mesh .input: no companion line" [ "$(wc -l < gi.out)" = 1 ]
-# The .vtk without its fixed-vertex file: a free boundary.  Without phantoms
+# The .off without its fixed-vertex file: a free boundary.  Without phantoms
 # Newton meets indefinite Hessians there, which CHOLMOD reported on stdout
 # (217 lines) until its printing was turned off.
-"$MAKE" square 10 2 1 free.vtk > /dev/null 2>&1
-run free free.vtk --no-phantoms -q -o free-out.vtk --report free.json
+"$MAKE" square 10 2 1 free.off > /dev/null 2>&1
+run free free.off --no-phantoms -q -o free-out.vtk --report free.json
 check "free boundary without phantoms: exit 0" rc_is free 0
 check "free boundary without phantoms: no fixed vertex" json_is free.json fixed_vertices 0
 check "free boundary without phantoms: nothing on stdout" empty free.out
 check "free boundary without phantoms: nothing on stderr (-q)" empty free.err
-mkdir blocked.vtk
-"$MAKE" square 6 2 4 blocked.vtk > blocked.out 2> blocked.err; echo $? > blocked.rc
+mkdir blocked.off
+"$MAKE" square 6 2 4 blocked.off > blocked.out 2> blocked.err; echo $? > blocked.rc
 check "make_tangled_mesh unwritable output: exit 2" rc_is blocked 2
-check "make_tangled_mesh unwritable output: message names it" err_has blocked 'blocked\.vtk'
+check "make_tangled_mesh unwritable output: message names it" err_has blocked 'blocked\.off'
 check "make_tangled_mesh unwritable output: no fixed-vertex file left" [ ! -e blocked-fixed.txt ]
-check "make_tangled_mesh unwritable output: no rest file left" [ ! -e blocked-rest.vtk ]
+check "make_tangled_mesh unwritable output: no rest file left" [ ! -e blocked-rest.off ]
 cd .. || exit 1
 
 #
@@ -242,6 +257,23 @@ run sq_vtk_back out.vtk --rest small.input -o back.vtk --report back_vtk.json -q
 check "out.vtk --rest small.input: exit 0" rc_is sq_vtk_back 0
 check "out.vtk re-read: inverted_before 0" json_is back_vtk.json inverted_before 0
 check "out.vtk re-read: 169 vertices" json_is back_vtk.json vertices 169
+# Its fixed flags are the fixed vertices when read back, unless --fixed says otherwise.
+check "out.vtk re-read: its fixed flags fix the vertices" json_is back_vtk.json fixed '"out.vtk"'
+check "out.vtk re-read: 48 fixed" json_is back_vtk.json fixed_vertices "$(json_get out_vtk.json fixed_vertices)"
+check "out.vtk re-read: the same flags written" [ "$(vtk_field back.vtk fixed)" = "$(vtk_field out.vtk fixed)" ]
+: > no-handles.txt
+run sq_vtk_free out.vtk --fixed no-handles.txt -o free-back.vtk --report free_back.json -q
+check "out.vtk --fixed (empty file): no fixed vertex" json_is free_back.json fixed_vertices 0
+check "out.vtk --fixed (empty file): no flag written" [ "$(vtk_sum free-back.vtk fixed)" = 0 ]
+# A 'fixed' flag that is neither 0 nor 1: the file and line, exit 2, no output.
+awk '$1 == "SCALARS" { on = ($2 == "fixed") } on && $1 == "1" && !done { print "2"; done = 1; next } { print }' \
+  out.vtk > badflag.vtk
+bad_line=$(awk '$1 == "SCALARS" { on = ($2 == "fixed") } on && $1 == "2" { print NR; exit }' badflag.vtk)
+run badflag badflag.vtk -o badflag-out.vtk -q
+check "bad fixed flag: exit 2" rc_is badflag 2
+check "bad fixed flag: file, line and point named" \
+  err_has badflag "badflag\.vtk:$bad_line: point scalar 'fixed' of point [0-9]+ is '2'; expected 0 or 1"
+check "bad fixed flag: no output" [ ! -e badflag-out.vtk ]
 run sq_mesh small.input -o out.mesh -q
 check "-o out.mesh: exit 0" rc_is sq_mesh 0
 check "-o out.mesh: MEDIT header, dimension 2" grep -q '^Dimension 2' out.mesh

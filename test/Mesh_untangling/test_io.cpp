@@ -152,6 +152,15 @@ Mesh_file map_only(Mesh_file m)
   return m;
 }
 
+// What VTK keeps: the map and the fixed vertices.
+Mesh_file map_and_fixed(const Mesh_file& m)
+{
+  Mesh_file kept = map_only(m);
+  kept.has_fixed = m.has_fixed;
+  kept.fixed = m.fixed;
+  return kept;
+}
+
 void check_round_trip(int line, const std::string& name, const Mesh_file& mesh, const Mesh_file& expected)
 {
   const std::string path = temp_path(name);
@@ -225,7 +234,10 @@ void test_round_trips()
   surface.has_fixed = true;
   check_round_trip(__LINE__, "surface.input", surface, surface);
 
-  check_round_trip(__LINE__, "tets.vtk", tets, map_only(tets));
+  check_round_trip(__LINE__, "tets.vtk", tets, map_and_fixed(tets));
+  Mesh_file none_fixed = tets;   // a list, empty: every vertex is free, and the file says so
+  none_fixed.fixed.clear();
+  check_round_trip(__LINE__, "none-fixed.vtk", none_fixed, map_and_fixed(none_fixed));
   check_round_trip(__LINE__, "tets.mesh", tets, map_only(tets));
   check_round_trip(__LINE__, "planar.vtk", textured, map_only(textured));
   check_round_trip(__LINE__, "planar.mesh", textured, map_only(textured));
@@ -400,6 +412,57 @@ void test_vtk_errors()
       read_vtk, "huge.vtk",
       "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 99999999999999 double\n0 0 0\n", 6,
       "truncated: the POINTS block ends after 1 of 99999999999999");
+}
+
+// The fixed vertices in a VTK file: the point scalar 'fixed', or a point
+// FIELD array of that name (as ParaView may save it); 'fixed' cell data is
+// not theirs.
+void test_vtk_fixed_flags()
+{
+  const std::string cells = std::string(vtk_head) + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n";
+  const std::string point_data = "POINT_DATA 5\n";   // line 17
+  Mesh_file m = IO::read_VTK(write_text("flags.vtk", cells + point_data + "SCALARS fixed int\nLOOKUP_TABLE default\n1 0 0 0 1\n"));
+  CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({0, 4}));
+  m = IO::read_VTK(write_text("flags-float.vtk", cells + "CELL_DATA 2\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1 1\n"
+                                                     + point_data + "SCALARS other float 1\nLOOKUP_TABLE default\n"
+                                                       "1 2 3 4 5\nSCALARS fixed float 1\nLOOKUP_TABLE t\n0.0 1.0 0 0e5 0\n"));
+  CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({1}));
+  m = IO::read_VTK(write_text("flags-cells.vtk", cells + "CELL_DATA 2\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1 1\n"));
+  CHECK(!m.has_fixed && m.fixed.empty());
+  m = IO::read_VTK(write_text("flags-none.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n0 0 0 0 0\n"));
+  CHECK(m.has_fixed && m.fixed.empty());
+  m = IO::read_VTK(write_text("flags-field.vtk", cells + point_data + "FIELD FieldData 2\ncovering 1 5 double\n1 1 1 1 1\n"
+                                                     "fixed 1 5 int\n0 0 1 0 0\n"));
+  CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({2}));
+
+  CHECK_READ_ERROR(read_vtk, "flag2.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0\n2 0 1\n", 21,
+                   "point scalar 'fixed' of point 2 is '2'; expected 0 or 1");
+  CHECK_READ_ERROR(read_vtk, "flagx.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 yes 0 1\n", 20,
+                   "point scalar 'fixed' of point 2 is not a number");
+  CHECK_READ_ERROR(read_vtk, "flagtrunc.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0\n", 20,
+                   "truncated: the POINT_DATA block ends after 3 of 5 fixed flags");
+  CHECK_READ_ERROR(read_vtk, "flagnext.vtk",
+                   cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0\nSCALARS b int 1\n", 21,
+                   "truncated: the POINT_DATA block ends after 3 of 5 fixed flags (found 'SCALARS')");
+  CHECK_READ_ERROR(read_vtk, "flagvec.vtk", cells + point_data + "SCALARS fixed int 3\nLOOKUP_TABLE default\n", 18,
+                   "point scalar 'fixed' has 3 components; expected 1");
+  CHECK_READ_ERROR(read_vtk, "flagtype.vtk", cells + point_data + "SCALARS fixed bits\nLOOKUP_TABLE default\n", 18,
+                   "unknown point scalar 'fixed' data type 'bits'");
+  CHECK_READ_ERROR(read_vtk, "flaglut.vtk", cells + point_data + "SCALARS fixed int 1\n1 0 0 0 1\n", 19,
+                   "expected LOOKUP_TABLE, got '1'");
+  CHECK_READ_ERROR(read_vtk, "flagname.vtk", cells + point_data + "SCALARS\nfixed int 1\n", 18,
+                   "expected 'SCALARS name type [components]'");
+  CHECK_READ_ERROR(read_vtk, "flagtwice.vtk",
+                   cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0 0 1\n"
+                                        "FIELD FieldData 1\nfixed 1 5 int\n1 0 0 0 1\n", 22,
+                   "a second point array 'fixed' (the fixed vertices are already given)");
+  CHECK_READ_ERROR(read_vtk, "flagtuples.vtk", cells + point_data + "FIELD FieldData 1\nfixed 1 4 int\n1 0 0 0\n", 19,
+                   "point array 'fixed' has 4 values but the file has 5 points");
+  CHECK_READ_ERROR(read_vtk, "pointcount.vtk", cells + "POINT_DATA 4\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0 0\n", 17,
+                   "POINT_DATA announces 4 values but the file has 5 points");
+  CHECK_READ_ERROR(read_vtk, "cellcount.vtk", cells + "CELL_DATA 3\nSCALARS q double 1\nLOOKUP_TABLE default\n1 2 3\n", 17,
+                   "CELL_DATA announces 3 values but the file has 2 cells");
+  CHECK_READ_ERROR(read_vtk, "countword.vtk", cells + "POINT_DATA five\n", 17, "POINT_DATA count");
 }
 
 void test_medit_errors()
@@ -591,12 +654,31 @@ void test_writer_errors()
   CHECK(read_text(target) == before);
   CHECK(!fs::exists(temp_path("bad.input")) && !fs::exists(temp_path("tets.obj")) && !fs::exists(temp_path("out.ply")));
 
-  // Fields are written; the reader skips them.
+  // A point field 'fixed' is what the reader takes as the fixed vertices:
+  // it must flag them as the mesh's list does, with 0 or 1.
+  Mesh_file fixed_tets = tets;
+  fixed_tets.has_fixed = true;
+  fixed_tets.fixed = {0, 4};
+  CHECK_WRITE_ERROR(IO::write_VTK(target, fixed_tets, {}, {{"fixed", {1, 0, 0, 0, 0}}}),
+                    "point field 'fixed' disagrees with the mesh's fixed vertices at point 4");
+  CHECK_WRITE_ERROR(IO::write_VTK(target, tets, {}, {{"fixed", {0, 0, 2, 0, 0}}}),
+                    "point field 'fixed' value 2 is neither 0 nor 1");
+  CHECK(read_text(target) == before);
+
+  // Fields are written; the reader skips them, except 'fixed'.
   IO::write_VTK(target, tets, {{"quality", {0.5, -2.25}}}, {{"fixed", {1, 0, 0, 0, 1}}});
   const std::string text = read_text(target);
   CHECK(text.find("CELL_DATA 2\nSCALARS quality double 1\nLOOKUP_TABLE default\n0.5\n-2.25\n") != std::string::npos);
   CHECK(text.find("POINT_DATA 5\nSCALARS fixed double 1") != std::string::npos);
-  CHECK(same_mesh(IO::read_VTK(target), map_only(tets)));
+  CHECK(same_mesh(IO::read_VTK(target), map_and_fixed(fixed_tets)));
+  IO::write_VTK(target, fixed_tets, {}, {{"fixed", {1, 0, 0, 0, 1}, true}, {"covering", std::vector<double>(5, 1.)}});
+  CHECK(same_mesh(IO::read_VTK(target), map_and_fixed(fixed_tets)));
+  CHECK(read_text(target).find("POINT_DATA 5\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1\n0\n0\n0\n1\nSCALARS covering")
+        != std::string::npos);
+  // Without a field of that name the writer adds it, first.
+  IO::write_VTK(target, fixed_tets, {}, {{"covering", std::vector<double>(5, 1.)}});
+  CHECK(read_text(target).find("POINT_DATA 5\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1\n0\n0\n0\n1\nSCALARS covering")
+        != std::string::npos);
 
   CHECK(!has_temporary_files());
 }
@@ -704,6 +786,7 @@ int main(int argc, char** argv)
   test_input_errors();
   test_off_errors();
   test_vtk_errors();
+  test_vtk_fixed_flags();
   test_medit_errors();
   test_obj_errors();
   test_handles_and_common_errors();

@@ -13,8 +13,10 @@
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -47,8 +49,9 @@ struct VTK_cell
 
 inline bool is_VTK_section(std::string_view word)
 {
-  static const char* const sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA",
-                                         "FIELD", "METADATA"};
+  static const char* const sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA", "FIELD",
+                                         "METADATA", "SCALARS", "COLOR_SCALARS", "LOOKUP_TABLE", "VECTORS",
+                                         "NORMALS", "TEXTURE_COORDINATES", "TENSORS"};
   for(const char* s : sections)
     if(same_keyword(word, s))
       return true;
@@ -106,10 +109,50 @@ inline bool next_VTK_token(Text_file& file, Token& token)
   return false;
 }
 
-// Field data of the whole data set (ParaView stores the time there) may come
-// before POINTS: 'FIELD name count', then per array 'name components tuples
+inline void check_VTK_data_type(const Text_file& file, const Token& token, const std::string& what = "POINTS")
+{
+  static const char* const types[] = {"float", "double", "int", "unsigned_int", "long", "unsigned_long",
+                                      "short", "unsigned_short", "char", "unsigned_char",
+                                      "vtktypeint32", "vtktypeint64", "vtktypefloat32", "vtktypefloat64"};
+  for(const char* t : types)
+    if(same_keyword(token.text, t))
+      return;
+  file.fail(token.line, "unknown " + what + " data type " + quote_token(token.text));
+}
+
+// The point scalar that marks the fixed vertices (written by write_VTK()).
+constexpr const char* VTK_fixed_field = "fixed";
+
+inline std::string VTK_fixed_name(const char* kind)
+{
+  return std::string(kind) + " '" + VTK_fixed_field + "'";
+}
+
+// A 0 or a 1 per point: the fixed vertices.  `at` is the line of the array's header.
+inline void read_VTK_fixed_values(Text_file& file, std::size_t at, const std::string& what, Mesh_file& mesh)
+{
+  if(mesh.has_fixed)
+    file.fail(at, "a second " + what + " (the fixed vertices are already given)");
+  const std::size_t n = mesh.map.size();
+  for(std::size_t v = 0; v < n; ++v) {
+    const Token t = next_VTK_value(file, "POINT_DATA", v, n, "fixed flags");
+    const double flag = to_double(file, t, what + " of point " + std::to_string(v));
+    if(flag != 0 && flag != 1)
+      file.fail(t.line, what + " of point " + std::to_string(v) + " is " + quote_token(t.text)
+                            + "; expected 0 or 1");
+    if(flag == 1)
+      mesh.fixed.push_back(v);
+  }
+  mesh.has_fixed = true;
+}
+
+// Field data: 'FIELD name count', then per array 'name components tuples
 // type' and its values (one token each: VTK encodes blanks in strings).
-inline void skip_VTK_field_data(Text_file& file)
+// Field data of the whole data set (ParaView stores the time there) may come
+// before POINTS and is skipped; within POINT_DATA (`point_data` given), an
+// array named 'fixed' gives the fixed vertices, as ParaView may save the
+// point scalar 'fixed' there.
+inline void read_VTK_field_data(Text_file& file, Mesh_file* point_data = nullptr)
 {
   Token name, count_token;
   if(!file.next_token(name) || !file.next_token(count_token))
@@ -127,6 +170,17 @@ inline void skip_VTK_field_data(Text_file& file)
     const std::size_t tuples = to_size(file, header[2], "tuple count of " + what);
     if(tuples != 0 && components > std::numeric_limits<std::size_t>::max() / tuples)
       file.fail(header[1].line, what + " is too large");
+    if(point_data != nullptr && header[0].text == VTK_fixed_field) {
+      const std::string array = VTK_fixed_name("point array");
+      if(components != 1)
+        file.fail(header[1].line, array + " has " + std::to_string(components) + " components; expected 1");
+      if(tuples != point_data->map.size())
+        file.fail(header[2].line, array + " has " + std::to_string(tuples) + " values but the file has "
+                                      + std::to_string(point_data->map.size()) + " points");
+      check_VTK_data_type(file, header[3], array);
+      read_VTK_fixed_values(file, header[0].line, array, *point_data);
+      continue;
+    }
     const std::size_t values = components * tuples;
     for(std::size_t i = 0; i < values; ++i)
       next_VTK_value(file, "FIELD", i, values, "values");
@@ -142,7 +196,7 @@ inline Token expect_VTK_section(Text_file& file, const char* keyword)
     if(!next_VTK_token(file, token))
       file.fail_truncated(std::string("expected ") + keyword);
     if(same_keyword(token.text, "FIELD"))
-      skip_VTK_field_data(file);
+      read_VTK_field_data(file);
     else if(same_keyword(token.text, keyword))
       return token;
     else
@@ -169,17 +223,6 @@ inline void read_VTK_header(Text_file& file)
     file.fail(format.line, "expected ASCII or BINARY, got " + quote_token(format.text));
   expect_VTK_keyword(file, "DATASET");
   expect_VTK_keyword(file, "UNSTRUCTURED_GRID");
-}
-
-inline void check_VTK_data_type(const Text_file& file, const Token& token)
-{
-  static const char* const types[] = {"float", "double", "int", "unsigned_int", "long", "unsigned_long",
-                                      "short", "unsigned_short", "char", "unsigned_char",
-                                      "vtktypeint32", "vtktypeint64", "vtktypefloat32", "vtktypefloat64"};
-  for(const char* t : types)
-    if(same_keyword(token.text, t))
-      return;
-  file.fail(token.line, "unknown POINTS data type " + quote_token(token.text));
 }
 
 inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
@@ -276,17 +319,61 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
   }
 }
 
-// Point and cell attributes may follow; this reader needs none of them.
-inline void check_VTK_tail(Text_file& file)
+// 'SCALARS fixed type [components]' (`header`: the line after SCALARS),
+// 'LOOKUP_TABLE name', then the flags.
+inline void read_VTK_fixed_scalar(Text_file& file, const Token& scalars, const std::vector<Token>& header,
+                                  Mesh_file& mesh)
+{
+  const std::string what = VTK_fixed_name("point scalar");
+  if(header.size() < 2 || header.size() > 3)
+    file.fail(scalars.line, "expected 'SCALARS " + std::string(VTK_fixed_field) + " type [components]'");
+  check_VTK_data_type(file, header[1], what);
+  if(header.size() == 3 && to_size(file, header[2], "component count of " + what) != 1)
+    file.fail(scalars.line, what + " has " + std::string(header[2].text) + " components; expected 1");
+  expect_VTK_keyword(file, "LOOKUP_TABLE");
+  Token table;
+  if(!file.next_token(table))
+    file.fail_truncated("expected the LOOKUP_TABLE name of " + what);
+  read_VTK_fixed_values(file, scalars.line, what, mesh);
+}
+
+// Point and cell attributes may follow.  Of them the reader takes the point
+// scalar 'fixed' (1 for a fixed vertex) that write_VTK() writes, also as a
+// point FIELD array, and checks that each block announces as many values as
+// there are points or cells; the rest is skipped.
+inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh)
 {
   Token token;
   if(!file.next_token(token))
     return;
-  static const char* const ignored[] = {"POINT_DATA", "CELL_DATA", "FIELD", "METADATA"};
-  for(const char* keyword : ignored)
-    if(same_keyword(token.text, keyword))
-      return;
-  file.fail(token.line, "unexpected " + quote_token(token.text) + " after CELL_TYPES");
+  static const char* const blocks[] = {"POINT_DATA", "CELL_DATA", "FIELD", "METADATA"};
+  if(std::none_of(std::begin(blocks), std::end(blocks), [&](const char* b) { return same_keyword(token.text, b); }))
+    file.fail(token.line, "unexpected " + quote_token(token.text) + " after CELL_TYPES");
+  bool in_point_data = false;
+  do {
+    if(same_keyword(token.text, "METADATA")) {
+      skip_VTK_metadata(file);
+    } else if(same_keyword(token.text, "POINT_DATA") || same_keyword(token.text, "CELL_DATA")) {
+      in_point_data = same_keyword(token.text, "POINT_DATA");
+      const std::string block(token.text);
+      const std::size_t expected = in_point_data ? mesh.map.size() : mesh.simplices.size();
+      Token count;
+      if(!file.next_token(count))
+        file.fail_truncated("expected the " + block + " count");
+      const std::size_t announced = to_size(file, count, block + " count");
+      if(announced != expected)
+        file.fail(count.line, block + " announces " + std::to_string(announced) + " values but the file has "
+                                  + std::to_string(expected) + (in_point_data ? " points" : " cells"));
+    } else if(in_point_data && same_keyword(token.text, "FIELD")) {
+      read_VTK_field_data(file, &mesh);
+    } else if(in_point_data && same_keyword(token.text, "SCALARS")) {
+      std::vector<Token> header;   // the rest of the SCALARS line
+      if(!file.next_line(header) || header[0].line != token.line)
+        file.fail(token.line, "expected 'SCALARS name type [components]'");
+      if(header[0].text == VTK_fixed_field)
+        read_VTK_fixed_scalar(file, token, header, mesh);
+    }
+  } while(file.next_token(token));
 }
 
 inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, std::size_t size,
@@ -328,6 +415,36 @@ inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::s
   }
 }
 
+// The point fields as written: first the mesh's fixed vertices, if it has
+// any list of them, as the scalar 'fixed' that read_VTK() reads back, unless
+// `given` holds a field of that name; that one must then read back as the
+// same vertices.
+inline VTK_fields VTK_point_fields(const std::string& path, const Mesh_file& mesh, const VTK_fields& given,
+                                   std::size_t number_of_points)
+{
+  std::vector<double> flags(number_of_points, 0.);
+  for(std::size_t v : mesh.fixed)
+    flags[v] = 1;
+  const auto named_fixed = [](const VTK_field& field) { return field.name == VTK_fixed_field; };
+  const auto fixed = std::find_if(given.begin(), given.end(), named_fixed);
+  if(fixed == given.end()) {
+    if(!mesh.has_fixed)
+      return given;
+    VTK_fields fields{VTK_field{VTK_fixed_field, std::move(flags), true}};
+    fields.insert(fields.end(), given.begin(), given.end());
+    return fields;
+  }
+  const std::string what = VTK_fixed_name("point field");
+  for(std::size_t v = 0; v < number_of_points; ++v) {
+    const double flag = fixed->values[v];
+    if(flag != 0 && flag != 1)
+      throw Write_error(path, what + " value " + std::to_string(v) + " is neither 0 nor 1");
+    if(mesh.has_fixed && flag != flags[v])
+      throw Write_error(path, what + " disagrees with the mesh's fixed vertices at point " + std::to_string(v));
+  }
+  return given;
+}
+
 inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 {
   const std::size_t k = static_cast<std::size_t>(mesh.simplex_size);
@@ -347,9 +464,12 @@ inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a legacy ASCII VTK unstructured grid of triangles (type 5) or
-/// tetrahedra (type 10) into `map`; point and cell data, field data and the
-/// array metadata that VTK 8 and later write are ignored.
-/// \throws Read_error if the file is missing, binary, or malformed.
+/// tetrahedra (type 10) into `map`.  A point scalar named `fixed` (0 or 1 per
+/// point, as write_VTK() writes it) gives the fixed vertices (`has_fixed`
+/// and `fixed`); other point and cell data, field data and the array
+/// metadata that VTK 8 and later write are skipped.
+/// \throws Read_error if the file is missing, binary, or malformed, or if
+/// its `fixed` scalar holds anything but a 0 or a 1 per point.
 inline Mesh_file read_VTK(const std::string& path)
 {
   internal::Text_file file(path);
@@ -358,7 +478,7 @@ inline Mesh_file read_VTK(const std::string& path)
   internal::read_VTK_points(file, mesh);
   std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
   internal::read_VTK_cell_types(file, cells, mesh);
-  internal::check_VTK_tail(file);
+  internal::read_VTK_attributes(file, mesh);
   mesh.map_dimension = internal::dimension_of(mesh.map, mesh.simplex_size);
   return mesh;
 }
@@ -367,7 +487,10 @@ inline Mesh_file read_VTK(const std::string& path)
 /// Writes the simplices and the map (the rest if there is no map) as a legacy
 /// ASCII VTK unstructured grid, with optional scalar fields (one value per
 /// simplex, resp. per vertex; `int` or `double`), e.g. to inspect inverted
-/// elements in ParaView.
+/// elements in ParaView.  When the mesh has a list of fixed vertices
+/// (`has_fixed`), they are written first as the point scalar `fixed` (1 for
+/// a fixed vertex), which read_VTK() reads back; a point field of that name
+/// in `point_fields` takes its place and must flag the same vertices.
 /// \throws Write_error if the mesh or a field is inconsistent, or the file
 /// cannot be written.
 inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_fields& cell_fields = {},
@@ -377,6 +500,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
   const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
   internal::check_VTK_fields(path, cell_fields, mesh.simplices.size(), "cell");
   internal::check_VTK_fields(path, point_fields, points.size(), "point");
+  const VTK_fields all_point_fields = internal::VTK_point_fields(path, mesh, point_fields, points.size());
   internal::Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "# vtk DataFile Version 2.0\nMesh_untangling\nASCII\nDATASET UNSTRUCTURED_GRID\n";
@@ -387,7 +511,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
   }
   internal::write_VTK_cells(out, mesh);
   internal::write_VTK_fields(out, cell_fields, mesh.simplices.size(), "CELL_DATA");
-  internal::write_VTK_fields(out, point_fields, points.size(), "POINT_DATA");
+  internal::write_VTK_fields(out, all_point_fields, points.size(), "POINT_DATA");
   file.commit();
 }
 
