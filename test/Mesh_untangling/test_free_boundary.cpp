@@ -13,6 +13,7 @@
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+#include <CGAL/Mesh_untangling/Untangling_step.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -77,6 +78,17 @@ void check_case(const std::string& name, const Problem& p, double max_shape_dist
                   name << ": shape distortion " << protected_run.result.max_shape_distortion);
 }
 
+/// The largest eps of the schedule's steps on `problem` (phantoms on).
+double largest_epsilon(const Problem& problem)
+{
+  Problem p = problem;
+  Run_options options;
+  double largest = 0;
+  options.progress = [&largest](const MU::Untangling_step& step) { largest = std::max(largest, step.epsilon); };
+  untangle_mesh_file(p.mesh, p.is_fixed, options);
+  return largest;
+}
+
 Problem all_free(Mesh_file mesh)
 {
   Problem p;
@@ -139,6 +151,38 @@ int main(int argc, char** argv)
   {
     const Problem sheet = all_free(make_formed_sheet(40, 8, 5 * 3.14159265358979323846 / 6));
     check_case("formed sheet 40x8, 150°", sheet, 1.05);
+  }
+
+  // Tetrahedral cubes tangled by up to a grid cell, with too few fixed
+  // vertices to pin the volume: none, one, two, the bottom face.  A map
+  // flattened onto them keeps them in place and, for eps above theta, costs
+  // less than a valid map; the schedule's eps stays at theta / 2 or below
+  // there (Eps_loop::largest_epsilon), and all of them untangle.
+  {
+    const std::size_t n = 8;
+    Mesh_file cube = make_cube_grid(n);
+    perturb_interior(cube, n, 1.0, 1);
+    std::vector<std::size_t> bottom;
+    for(std::size_t v = 0; v < cube.map.size(); ++v)
+      if(cube.map[v][2] == 0) bottom.push_back(v);
+    const std::pair<const char*, std::vector<std::size_t>> fixed_sets[] = {
+        {"nothing", {}}, {"vertex 0", {0}}, {"vertices 0, 1", {0, 1}}, {"the bottom face", bottom}};
+    for(const auto& [what, ids] : fixed_sets) {
+      Problem p = all_free(cube);
+      for(std::size_t v : ids) p.is_fixed[v] = true;
+      const std::string name = "cube 8, " + std::string(what) + " fixed";
+      check_case(name, p);
+      const double eps = largest_epsilon(p);
+      CHECK_MESSAGE(eps <= 0.25, name << ": eps " << eps << " above theta / 2");
+    }
+    // Fixed vertices that span the space: the published schedule, whose first
+    // eps here is 0.2 |min det J| > theta / 2.
+    Problem pinned = all_free(cube);
+    for(std::size_t v : bottom) pinned.is_fixed[v] = true;
+    for(std::size_t v = 0; v < cube.map.size(); ++v)
+      if(cube.map[v][2] == 1) pinned.is_fixed[v] = true;
+    const double eps = largest_epsilon(pinned);
+    CHECK_MESSAGE(eps > 0.25, "cube 8, bottom and top fixed: eps at most " << eps);
   }
 
   const std::string data = test::data_dir(argc, argv, "the free-boundary tlc-format files");

@@ -132,6 +132,28 @@ struct Untangling_problem
   Vector to_user(const Vector& p) const { return p * scale + center; }
 };
 
+/// Whether the fixed vertices span the space: at least d + 1 of them, not
+/// all on one hyperplane (nor within a thousandth of their extent of one).
+/// Otherwise a map of zero volume keeps them in place: every free vertex
+/// moved onto their point, line or plane.
+template <int d>
+bool fixed_vertices_span_space(const Untangling_problem<d>& P)
+{
+  using Vector = typename Untangling_problem<d>::Vector;
+  using Matrix = Eigen::Matrix<double, d, d>;
+  if(P.number_of_fixed_vertices <= std::size_t(d)) return false;
+  Vector mean = Vector::Zero();
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(P.is_fixed[v]) mean += P.point(v);
+  mean /= double(P.number_of_fixed_vertices);
+  Matrix scatter = Matrix::Zero();
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(P.is_fixed[v]) scatter.noalias() += (P.point(v) - mean) * (P.point(v) - mean).transpose();
+  // the eigenvalues are squared widths: a thickness ratio of 1e-3 is 1e-6 here
+  const Vector widths = Eigen::SelfAdjointEigenSolver<Matrix>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
+  return widths(0) > 1e-6 * widths(d - 1);
+}
+
 template <int d>
 double simplex_volume(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
 {
