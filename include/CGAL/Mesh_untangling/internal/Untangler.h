@@ -302,16 +302,18 @@ private:
   /// not span the space, a map of zero volume keeps them in place (every det
   /// J = 0), and it costs F = theta / eps from the volume term (chi(0) =
   /// eps / 2) plus a bounded shape term, against about 1 for a valid map of
-  /// the targets' size: above eps = theta, Newton slides toward it.  The
+  /// the targets' size: above eps = theta, the minimization heads for it.  The
   /// published first eps is 0.2 |min det J|, 1.04 on a tetrahedral cube 6
   /// tangled by a grid cell with nothing fixed (theta = 1/2), whose run then
   /// ended with all 1,296 tetrahedra flat.  In 3D, eps stays at theta / 2 or
-  /// below there: 18 tangled cubes of 1,296 to 48,000 tetrahedra with 0, 1
-  /// or 2 vertices fixed went from 5 untangled (0.4 to over 300 s) to all 18
-  /// (0.01 to 0.46 s); with the bottom face fixed, 0.2-1.0 s became 0.04 s.
-  /// Not in 2D: theta = 1/128 there, and eps at most 1/256 left free squares
-  /// of 800 to 5,000 triangles with 4 to 886 inverted, where they now end
-  /// with none (if not always locally invertible).
+  /// below there: on tetrahedral cubes of 1,296 to 48,000 elements tangled
+  /// by up to two grid cells, with none, one or two vertices fixed, most runs
+  /// ended tangled, flat or over-wound (some after minutes), and now all
+  /// untangle, in half a second at most; with the bottom face fixed they
+  /// untangled before too, 5 to 20 times slower.  Not in 2D: theta = 1/128
+  /// there, and eps at most 1/256 left three of four tangled free squares
+  /// (800 to 5,000 triangles, nothing fixed) with 4 to 886 inverted
+  /// triangles, where without it none stays inverted.
   double largest_epsilon(const Untangling_problem<d>& P) const
   {
     return d == 3 && !fixed_vertices_span_space(P) ? theta_ / 2 : std::numeric_limits<double>::infinity();
