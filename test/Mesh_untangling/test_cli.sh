@@ -195,6 +195,14 @@ check "free boundary without phantoms: exit 0" rc_is free 0
 check "free boundary without phantoms: no fixed vertex" json_is free.json fixed_vertices 0
 check "free boundary without phantoms: nothing on stdout" empty free.out
 check "free boundary without phantoms: nothing on stderr (-q)" empty free.err
+# A tangled tetrahedral mesh with nothing fixed: the eps bound keeps the
+# schedule from flattening it (it ended with every tetrahedron flat, exit 1).
+"$MAKE" cube 6 1 3 free3.mesh > /dev/null 2>&1
+run free3 free3.mesh -q -o free3-out.mesh --report free3.json
+check "3D, nothing fixed: exit 0" rc_is free3 0
+check "3D, nothing fixed: no fixed vertex" json_is free3.json fixed_vertices 0
+check "3D, nothing fixed: was tangled" json_is free3.json inverted_before 258
+check "3D, nothing fixed: locally invertible" json_is free3.json locally_invertible true
 mkdir blocked.off
 "$MAKE" square 6 2 4 blocked.off > blocked.out 2> blocked.err; echo $? > blocked.rc
 check "make_tangled_mesh unwritable output: exit 2" rc_is blocked 2
