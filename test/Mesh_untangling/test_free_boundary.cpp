@@ -175,6 +175,14 @@ int main(int argc, char** argv)
       const double eps = largest_epsilon(p);
       CHECK_MESSAGE(eps <= 0.25, name << ": eps " << eps << " above theta / 2");
     }
+    // The bottom face rippled by 1e-5 (of a unit cube) is as flat.
+    Problem rippled = all_free(cube);
+    for(std::size_t i = 0; i < bottom.size(); ++i) {
+      rippled.is_fixed[bottom[i]] = true;
+      rippled.mesh.map[bottom[i]][2] = i % 2 == 0 ? 1e-5 : -1e-5;
+    }
+    const double rippled_eps = largest_epsilon(rippled);
+    CHECK_MESSAGE(rippled_eps <= 0.25, "cube 8, rippled bottom face fixed: eps " << rippled_eps << " above theta / 2");
     // Fixed vertices that span the space: the published schedule, whose first
     // eps here is 0.2 |min det J| > theta / 2.
     Problem pinned = all_free(cube);

@@ -149,9 +149,9 @@ bool fixed_vertices_span_space(const Untangling_problem<d>& P)
   Matrix scatter = Matrix::Zero();
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
     if(P.is_fixed[v]) scatter.noalias() += (P.point(v) - mean) * (P.point(v) - mean).transpose();
-  // the eigenvalues are squared widths: a thickness ratio of 1e-3 is 1e-6 here
-  const Vector widths = Eigen::SelfAdjointEigenSolver<Matrix>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
-  return widths(0) > 1e-6 * widths(d - 1);
+  // squared widths, increasing: a thickness of 1e-3 of the extent is a ratio of 1e-6
+  const Vector squared_widths = Eigen::SelfAdjointEigenSolver<Matrix>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
+  return squared_widths(0) > 1e-6 * squared_widths(d - 1);
 }
 
 template <int d>
