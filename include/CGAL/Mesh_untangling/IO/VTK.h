@@ -136,7 +136,10 @@ inline void read_VTK_fixed_values(Text_file& file, std::size_t at, const std::st
   const std::size_t n = mesh.map.size();
   for(std::size_t v = 0; v < n; ++v) {
     const Token t = next_VTK_value(file, "POINT_DATA", v, n, "fixed flags");
-    const double flag = to_double(file, t, what + " of point " + std::to_string(v));
+    // (the message is built only on failure: this runs once per point)
+    double flag = 0;
+    if(parse_double(t.text, flag) != Number_status::OK)
+      flag = to_double(file, t, what + " of point " + std::to_string(v));   // throws, naming the point
     if(flag != 0 && flag != 1)
       file.fail(t.line, what + " of point " + std::to_string(v) + " is " + quote_token(t.text)
                             + "; expected 0 or 1");
