@@ -421,6 +421,7 @@ void test_vtk_fixed_flags()
 {
   const std::string cells = std::string(vtk_head) + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n";
   const std::string point_data = "POINT_DATA 5\n";   // line 17
+  const std::string flags_head = cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n";   // to line 19
   Mesh_file m = IO::read_VTK(write_text("flags.vtk", cells + point_data + "SCALARS fixed int\nLOOKUP_TABLE default\n1 0 0 0 1\n"));
   CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({0, 4}));
   m = IO::read_VTK(write_text("flags-float.vtk", cells + "CELL_DATA 2\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1 1\n"
@@ -429,20 +430,20 @@ void test_vtk_fixed_flags()
   CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({1}));
   m = IO::read_VTK(write_text("flags-cells.vtk", cells + "CELL_DATA 2\nSCALARS fixed int 1\nLOOKUP_TABLE default\n1 1\n"));
   CHECK(!m.has_fixed && m.fixed.empty());
-  m = IO::read_VTK(write_text("flags-none.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n0 0 0 0 0\n"));
+  m = IO::read_VTK(write_text("flags-none.vtk", flags_head + "0 0 0 0 0\n"));
   CHECK(m.has_fixed && m.fixed.empty());
   m = IO::read_VTK(write_text("flags-field.vtk", cells + point_data + "FIELD FieldData 2\ncovering 1 5 double\n1 1 1 1 1\n"
                                                      "fixed 1 5 int\n0 0 1 0 0\n"));
   CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({2}));
 
-  CHECK_READ_ERROR(read_vtk, "flag2.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0\n2 0 1\n", 21,
+  CHECK_READ_ERROR(read_vtk, "flag2.vtk", flags_head + "1 0\n2 0 1\n", 21,
                    "point scalar 'fixed' of point 2 is '2'; expected 0 or 1");
-  CHECK_READ_ERROR(read_vtk, "flagx.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 yes 0 1\n", 20,
+  CHECK_READ_ERROR(read_vtk, "flagx.vtk", flags_head + "1 0 yes 0 1\n", 20,
                    "point scalar 'fixed' of point 2 is not a number");
-  CHECK_READ_ERROR(read_vtk, "flagtrunc.vtk", cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0\n", 20,
+  CHECK_READ_ERROR(read_vtk, "flagtrunc.vtk", flags_head + "1 0 0\n", 20,
                    "truncated: the POINT_DATA block ends after 3 of 5 fixed flags");
   CHECK_READ_ERROR(read_vtk, "flagnext.vtk",
-                   cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0\nSCALARS b int 1\n", 21,
+                   flags_head + "1 0 0\nSCALARS b int 1\n", 21,
                    "truncated: the POINT_DATA block ends after 3 of 5 fixed flags (found 'SCALARS')");
   CHECK_READ_ERROR(read_vtk, "flagvec.vtk", cells + point_data + "SCALARS fixed int 3\nLOOKUP_TABLE default\n", 18,
                    "point scalar 'fixed' has 3 components; expected 1");
@@ -453,7 +454,7 @@ void test_vtk_fixed_flags()
   CHECK_READ_ERROR(read_vtk, "flagname.vtk", cells + point_data + "SCALARS\nfixed int 1\n", 18,
                    "expected 'SCALARS name type [components]'");
   CHECK_READ_ERROR(read_vtk, "flagtwice.vtk",
-                   cells + point_data + "SCALARS fixed int 1\nLOOKUP_TABLE default\n1 0 0 0 1\n"
+                   flags_head + "1 0 0 0 1\n"
                                         "FIELD FieldData 1\nfixed 1 5 int\n1 0 0 0 1\n", 22,
                    "a second point array 'fixed' (the fixed vertices are already given)");
   CHECK_READ_ERROR(read_vtk, "flagtuples.vtk", cells + point_data + "FIELD FieldData 1\nfixed 1 4 int\n1 0 0 0\n", 19,
