@@ -160,7 +160,7 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     send("input_defects", std::to_string(before.input_defects));
 
     Run_options options;
-    options.solver = solver;
+    options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
     options.max_seconds = time_limit;
     const auto start = std::chrono::steady_clock::now();
     const Untangling_result result = untangle_mesh_file(p.mesh, p.is_fixed, options);

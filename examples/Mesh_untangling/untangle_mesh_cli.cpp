@@ -11,7 +11,8 @@
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
-#include <CGAL/Mesh_untangling/internal/continuation.h>
+#include <CGAL/Mesh_untangling/Untangling_step.h>
+#include <CGAL/Mesh_untangling/parameters.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -248,7 +249,7 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["phantom_elements_not_positive_after"] = phantoms_not_positive;
   j["phantoms_output"] = args.phantoms.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.phantoms);
   j["solver"] = r.solver;
-  j["theta"] = args.theta >= 0 ? args.theta : (mesh.simplex_size == 3 ? 1. / 128 : 0.5);
+  j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(mesh.simplex_size - 1);
   j["status"] = MU::to_string(r.status);
   j["locally_invertible"] = v.locally_invertible;
   j["inverted_before"] = r.inverted_before;
@@ -292,8 +293,8 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
 Run_options run_options(const Arguments& args)
 {
   Run_options options;
-  options.solver = args.solver;
-  options.theta = args.theta;
+  options.solver = *MU::solver_from_string(args.solver);   // (CLI11 admits only the solvers' names)
+  if(args.theta >= 0) options.theta = args.theta;
   options.max_iterations = args.max_iterations;
   options.max_seconds = args.time_limit;
   options.phantoms = !args.no_phantoms;

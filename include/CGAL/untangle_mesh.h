@@ -3,12 +3,13 @@
 #ifndef CGAL_UNTANGLE_MESH_H
 #define CGAL_UNTANGLE_MESH_H
 
+#include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Phantom_element.h>
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
-#include <CGAL/Mesh_untangling/internal/continuation.h>
-#include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
+#include <CGAL/Mesh_untangling/internal/front_ends.h>
+#include <CGAL/Mesh_untangling/internal/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -17,66 +18,6 @@
 
 namespace CGAL {
 
-namespace Mesh_untangling {
-
-/// \ingroup PkgMeshUntanglingRef
-/// How target sizes relate to the map (`Mesh_untangling::parameters::target_scaling`):
-/// `AUTOMATIC`, `AS_GIVEN` or `MATCH_MAP_VOLUME`.
-
-namespace internal {
-
-/// Reads the parameters every entry point shares.
-template <typename NamedParameters>
-Untangling_options read_options(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Untangling_options o;
-  o.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta), -1.);
-  o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::AUTOMATIC);
-  o.scaling = choose_parameter(get_parameter(np, internal_np::mesh_untangling_target_scaling), Target_scaling::AUTOMATIC);
-  o.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), Mesh_untangling::default_number_of_iterations);
-  o.max_seconds = choose_parameter(get_parameter(np, internal_np::maximum_running_time),
-                                   std::numeric_limits<double>::infinity());
-  o.callback = choose_parameter(get_parameter(np, internal_np::callback),
-                                std::function<bool(const Untangling_step&)>());
-  o.continuation = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation),
-                                    Continuation::AUTOMATIC);
-  o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
-                                          Mesh_untangling::default_continuation_steps);
-  return o;
-}
-
-/// The phantom protection asked for: `phantom_protection` and the user's
-/// `phantom_elements` (vertex handles turned into indices by `index_of`).
-template <int d, typename NamedParameters, typename IndexOf>
-Protection_request<d> read_protection(const NamedParameters& np, const IndexOf& index_of)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Protection_request<d> request;
-  request.enabled = choose_parameter(get_parameter(np, internal_np::mesh_untangling_phantom_protection), true);
-  const auto supplied = get_parameter(np, internal_np::mesh_untangling_phantom_elements);
-  if constexpr(is_given<std::decay_t<decltype(supplied)>>())
-    request.supplied = to_phantom_elements<d>(supplied, index_of);
-  return request;
-}
-
-/// Hands the phantoms used to `phantom_output`, if given.
-template <typename Vertex, typename Point, int d, typename NamedParameters, typename VertexOf>
-void write_phantom_output(const NamedParameters& np, const Phantom_elements<d>& used, const VertexOf& vertex_of)
-{
-  const auto out = CGAL::parameters::get_parameter(np, internal_np::mesh_untangling_phantom_output);
-  if constexpr(is_given<std::decay_t<decltype(out)>>())
-    output_phantom_elements<Vertex, Point>(used, out, vertex_of);
-}
-
-template <typename T> struct Is_named_parameters : std::false_type {};
-template <typename T, typename Tag, typename Base>
-struct Is_named_parameters<Named_function_parameters<T, Tag, Base>> : std::true_type {};
-
-} // namespace internal
-} // namespace Mesh_untangling
 
 /// \ingroup PkgMeshUntanglingRef
 /// Untangles the 2D map `uv` of a triangle mesh: moves the free vertices
@@ -137,27 +78,20 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, false>());
   const auto targets = get_parameter(np, internal_np::mesh_untangling_face_target_map);
-  const auto options = Mesh_untangling::internal::read_options(np);
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename boost::property_traits<VertexUVMap>::value_type;
 
   Mesh_untangling::internal::Face_graph_adaptor<TriangleMesh> adaptor(tm);
-  const auto index_of = [&](vertex_descriptor v) { return adaptor.index_of(v); };
-  const auto vertex_of = [&](std::size_t i) { return adaptor.vertex(i); };
-  const auto protection = Mesh_untangling::internal::read_protection<2>(np, index_of);
   auto input = adaptor.make_input(uv, domain, fixed, targets);
   if(!adaptor.error().empty()) {
     Mesh_untangling::Untangling_result invalid;
     invalid.message = adaptor.error();
     return invalid;
   }
-  Mesh_untangling::internal::Phantom_elements<2> phantoms;
-  const auto result = Mesh_untangling::internal::untangle<2>(input, options, protection, &phantoms);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
-    adaptor.write_back(input, uv);
-    Mesh_untangling::internal::write_phantom_output<vertex_descriptor, Point_2>(np, phantoms, vertex_of);
-  }
-  return result;
+  return Mesh_untangling::internal::untangle_as_parameters_ask<2, vertex_descriptor, Point_2>(
+    input, np, [&](vertex_descriptor v) { return adaptor.index_of(v); },
+    [&](std::size_t i) { return adaptor.vertex(i); },
+    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); });
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -191,19 +125,15 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
                                       Static_boolean_property_map<std::size_t, false>());
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_point_map);
   const auto targets = get_parameter(np, internal_np::mesh_untangling_cell_target_map);
-  const auto options = Mesh_untangling::internal::read_options(np);
-  const auto identity = [](std::size_t i) { return i; };
-  const auto protection = Mesh_untangling::internal::read_protection<3>(np, identity);
   using Point_3 = typename boost::property_traits<decltype(get(CGAL::vertex_point, tc))>::value_type;
 
   auto input = Mesh_untangling::internal::make_tetrahedral_input(tc, fixed, rest, targets);
-  Mesh_untangling::internal::Phantom_elements<3> phantoms;
-  const auto result = Mesh_untangling::internal::untangle<3>(input, options, protection, &phantoms);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
-    Mesh_untangling::internal::write_back_tetrahedral(input, tc);
-    Mesh_untangling::internal::write_phantom_output<std::size_t, Point_3>(np, phantoms, identity);
-  }
-  return result;
+  const auto identity = [](std::size_t i) { return i; };
+  return Mesh_untangling::internal::untangle_as_parameters_ask<3, std::size_t, Point_3>(
+    input, np, identity, identity,
+    [&](const Mesh_untangling::internal::Untangling_input<3>& result) {
+      Mesh_untangling::internal::write_back_tetrahedral(result, tc);
+    });
 }
 
 template <typename P>
@@ -215,8 +145,35 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_me
 /// \ingroup PkgMeshUntanglingRef
 /// Untangles a point/simplex soup: `Point_2` points with triangles, or
 /// `Point_3` points with tetrahedra (each simplex a random access range of
-/// point indices).  Targets from `Mesh_untangling::parameters::rest_points`
-/// (same point type, one per point), regular simplices otherwise.
+/// point indices).  The points are the (tangled) map and receive the result.
+///
+/// \tparam PointRange a random access range of `Point_2` or `Point_3`
+/// \tparam SimplexRange a range of simplices, each a random access range of 3 (triangles) or 4 (tetrahedra) point indices
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed points: never written}
+///     \cgalParamType{a readable property map `std::size_t` -> `bool`}
+///     \cgalParamDefault{no point is fixed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::rest_points}
+///     \cgalParamDescription{the rest (target) shape, one point per point: each simplex's target is
+///       its rest simplex; with triangles, `Point_3` rest points give a surface whose triangles are
+///       laid flat isometrically (a flattening)}
+///     \cgalParamType{a random access range of points of the map's type, or of `Point_3` with triangles}
+///     \cgalParamDefault{regular simplices of the map's mean size}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback}
+///     \cgalParamDescription{as for the triangle mesh overload}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, continuation, continuation_steps}
+///     \cgalParamDescription{see `CGAL/Mesh_untangling/parameters.h`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::phantom_protection, phantom_elements, phantom_output, element_figures_output}
+///     \cgalParamDescription{free-boundary protection and the per-element figures of the result; phantoms as
+///       `Mesh_untangling::Phantom_element<std::size_t, Point>`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename PointRange, typename SimplexRange,
           typename NamedParameters = parameters::Default_named_parameters>
 Mesh_untangling::Untangling_result
@@ -230,25 +187,22 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_points);
-  const auto options = Mesh_untangling::internal::read_options(np);
 
-  if constexpr(Mesh_untangling::internal::is_given<std::decay_t<decltype(rest)>>()) {
+  if constexpr(Mesh_untangling::internal::is_given_parameter<NamedParameters,
+                                                            internal_np::mesh_untangling_rest_points_t>()) {
     if(std::size_t(rest.size()) != std::size_t(points.size())) {
       Mesh_untangling::Untangling_result invalid;
       invalid.message = std::to_string(rest.size()) + " rest points for " + std::to_string(points.size()) + " points";
       return invalid;
     }
   }
-  const auto identity = [](std::size_t i) { return i; };
-  const auto protection = Mesh_untangling::internal::read_protection<d>(np, identity);
   auto input = Mesh_untangling::internal::make_soup_input<d>(points, simplices, fixed, rest);
-  Mesh_untangling::internal::Phantom_elements<d> phantoms;
-  const auto result = Mesh_untangling::internal::untangle<d>(input, options, protection, &phantoms);
-  if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
-    Mesh_untangling::internal::write_back_soup<d>(input, points);
-    Mesh_untangling::internal::write_phantom_output<std::size_t, Point>(np, phantoms, identity);
-  }
-  return result;
+  const auto identity = [](std::size_t i) { return i; };
+  return Mesh_untangling::internal::untangle_as_parameters_ask<d, std::size_t, Point>(
+    input, np, identity, identity,
+    [&](const Mesh_untangling::internal::Untangling_input<d>& result) {
+      Mesh_untangling::internal::write_back_soup<d>(result, points);
+    });
 }
 
 } // namespace CGAL

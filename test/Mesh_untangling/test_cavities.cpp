@@ -42,7 +42,7 @@ int main()
   const auto run = [&](const char* name, bool protect, MU::Continuation continuation, Mesh_file& m,
                        const char* solver = "auto") {
     Run_options o;
-    o.solver = solver;
+    o.solver = *MU::solver_from_string(solver);
     o.phantoms = protect;
     o.continuation = continuation;
     o.max_seconds = 900;   // a safety net: the default run takes about a minute

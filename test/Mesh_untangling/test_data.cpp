@@ -67,7 +67,7 @@ void check_time_limit_inside_inner_solve(const std::string& data)
   const auto one_step = [&](double seconds) {
     Problem p = load(c);
     Run_options options;
-    options.solver = "lbfgs";
+    options.solver = CGAL::Mesh_untangling::Solver::LBFGS;
     options.max_iterations = 1;
     options.max_seconds = seconds;
     return untangle_mesh_file(p.mesh, p.is_fixed, options);
@@ -94,7 +94,7 @@ void check_stages_hand_over_at_first_valid_map(const std::string& data)
     Problem p = load(c);
     std::vector<CGAL::Mesh_untangling::Untangling_step> steps;
     Run_options options;
-    options.solver = solver;
+    options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
     options.progress = [&](const CGAL::Mesh_untangling::Untangling_step& s) { steps.push_back(s); };
     const auto result = untangle_mesh_file(p.mesh, p.is_fixed, options);
     std::vector<std::size_t> stage_zero, stage_one, stage_two;

@@ -24,7 +24,7 @@ std::string run(const std::string& name, Mesh_file mesh, const std::string& solv
   const Mesh_file input = mesh;
   const Verdict before = check_mesh_file(mesh, fixed);
   Run_options options;
-  options.solver = solver;
+  options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
   const auto result = untangle_mesh_file(mesh, fixed, options);
   const Verdict after = check_mesh_file(mesh, fixed);
   std::cout << name << " [" << solver << "]: inverted " << before.inverted << " -> " << after.inverted
@@ -51,7 +51,7 @@ void check_epsilon_sequence()
   for(std::size_t v : mesh.fixed) fixed[v] = true;
   std::vector<CGAL::Mesh_untangling::Untangling_step> steps;
   Run_options options;
-  options.solver = "lbfgs";
+  options.solver = CGAL::Mesh_untangling::Solver::LBFGS;
   options.progress = [&](const CGAL::Mesh_untangling::Untangling_step& s) { steps.push_back(s); };
   const auto result = untangle_mesh_file(mesh, fixed, options);
   CHECK(steps.size() >= 2);
@@ -98,7 +98,7 @@ void check_hand_over_algebra(const Mesh_file& tangled)
 #endif
     Mesh_file mesh = tangled;
     Run_options options;
-    options.solver = solver;
+    options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
     const auto result = untangle_mesh_file(mesh, fixed, options);
     return std::make_pair(result, mesh.map);
   };
@@ -129,7 +129,7 @@ void check_published_trial()
   const auto untangle = [&](const std::string& solver) {
     Mesh_file mesh = square;
     Run_options options;
-    options.solver = solver;
+    options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
     return untangle_mesh_file(mesh, fixed, options);
   };
   const auto automatic = untangle("auto"), published = untangle("lbfgs");

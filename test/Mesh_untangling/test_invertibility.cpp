@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the local invertibility checks (MISSION §4).
+// Tests of the local invertibility checks (inverted elements and over-wound stars).
 // Usage: test_invertibility [shared data dir]
 
 #include <CGAL/Mesh_untangling/invertibility.h>

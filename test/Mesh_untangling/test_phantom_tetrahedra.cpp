@@ -12,7 +12,7 @@
 #include "test_common.h"
 #include "generators.h"
 
-#include <CGAL/Mesh_untangling/internal/phantom_tetrahedra.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantom_tetrahedra.h>
 
 #include <algorithm>
 #include <array>

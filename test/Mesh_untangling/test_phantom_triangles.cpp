@@ -10,8 +10,8 @@
 
 #include "test_common.h"
 
-#include <CGAL/Mesh_untangling/internal/phantom_triangles.h>
-#include <CGAL/Mesh_untangling/internal/continuation.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantom_triangles.h>
+#include <CGAL/Mesh_untangling/internal/untangle_impl.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
 #include <algorithm>
@@ -436,7 +436,7 @@ static void test_random_meshes()
     std::size_t bad = 0, unreduced = 0;
     for(std::size_t v = 0; v < nv; ++v) {
       const auto kind = builder.build(v, star);
-      const Replay r = replay(star.outer, kind == MI::Star_kind::CLOSED, phantoms_of(p, v));
+      const Replay r = replay(star.outer, kind == MI::Star_type::CLOSED, phantoms_of(p, v));
       if(!r.valid) { ++bad; std::cerr << what << " vertex " << v << ": " << r.error << "\n"; continue; }
       // the basic star: at most one free vertex between fixed ones (and the ends of an open
       // star); with fewer than two fixed outer vertices in a closed star, at most 4 left
@@ -455,7 +455,7 @@ static void test_random_meshes()
       }
       if(!reduced) {
         ++unreduced;
-        std::cout << "  incomplete: " << what << " vertex " << v << (kind == MI::Star_kind::CLOSED ? " closed" : " open")
+        std::cout << "  incomplete: " << what << " vertex " << v << (kind == MI::Star_type::CLOSED ? " closed" : " open")
                   << " star of " << star.outer.size() << " left with";
         for(std::size_t x : r.sequence) std::cout << " " << x << (fixed[x] ? "F" : "");
         std::cout << (r.cyclic ? " (cyclic)\n" : " (linear)\n");

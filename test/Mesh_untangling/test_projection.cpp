@@ -5,7 +5,7 @@
 // Hessians in vertex coordinates, lower triangle, coloured parallel loops)
 // against a plain sum of K^T P K, and its bits with 1 and 2 threads; the
 // elements stored colour by colour for those loops.
-#include <CGAL/Mesh_untangling/internal/Newton_solver.h>
+#include <CGAL/Mesh_untangling/internal/solvers/Newton_solver.h>
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
 
 #include "test_common.h"

@@ -3,10 +3,15 @@
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
-#include <CGAL/Mesh_untangling/internal/continuation.h>
-#include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/untangle_mesh.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <iterator>
+#include <type_traits>
 
 namespace Mesh_untangling_tools {
 
@@ -53,106 +58,97 @@ void check_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
                           std::to_string(mesh.map.size()));
 }
 
+/// The map and its elements in the solver's form, without targets.
 template <int d>
-MU::internal::Untangling_input<d> make_input(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+MU::internal::Untangling_input<d> map_only(const Mesh_file& mesh)
 {
   MU::internal::Untangling_input<d> in;
   in.positions.reserve(mesh.map.size());
   for(const auto& p : mesh.map) in.positions.push_back(MU::internal::to_vector<d>(p));
   in.elements = simplices_of<d>(mesh);
-  in.is_fixed = is_fixed;
-  if(mesh.rest.empty()) return in;
-  for(const auto& e : in.elements)
-    for(std::size_t v : e)
-      if(v >= mesh.rest.size()) return in;   // reported by the problem's own checks
-  // (in parallel: a million tetrahedra take a tenth of a second)
-  in.targets.resize(in.elements.size());
-  MU::internal::for_each_chunk(in.elements.size(), MU::internal::element_chunk_size,
-                               [&](std::size_t, std::size_t first, std::size_t last) {
-    for(std::size_t k = first; k < last; ++k) {
-      const auto& e = in.elements[k];
-      if constexpr(d == 2) {
-        if(mesh.rest_dimension == 3)
-          in.targets[k] = MU::internal::flatten_triangle(mesh.rest[e[0]], mesh.rest[e[1]], mesh.rest[e[2]]);
-        else
-          in.targets[k] = {MU::internal::to_vector<2>(mesh.rest[e[0]]), MU::internal::to_vector<2>(mesh.rest[e[1]]),
-                           MU::internal::to_vector<2>(mesh.rest[e[2]])};
-      } else {
-        for(int i = 0; i < 4; ++i) in.targets[k][i] = MU::internal::to_vector<3>(mesh.rest[e[i]]);
-      }
-    }
-  });
   return in;
 }
 
+using Kernel = CGAL::Simple_cartesian<double>;
+
 template <int d>
-std::array<std::size_t, 4> widened(const std::array<std::size_t, d + 1>& s)
+using Point = std::conditional_t<d == 2, Kernel::Point_2, Kernel::Point_3>;
+
+template <int d, typename Coordinates>
+std::vector<Point<d>> cgal_points(const std::vector<Coordinates>& points)
 {
-  std::array<std::size_t, 4> w{0, 0, 0, 0};
-  for(int i = 0; i <= d; ++i) w[i] = s[i];
-  return w;
+  std::vector<Point<d>> p;
+  p.reserve(points.size());
+  for(const auto& q : points) {
+    if constexpr(d == 2) p.emplace_back(q[0], q[1]);
+    else p.emplace_back(q[0], q[1], q[2]);
+  }
+  return p;
 }
 
-/// The targets of the run as make_untangling_problem() scaled them: the same
-/// call on the input the run started from (the scale of matched targets
-/// comes from the initial map), with the targets it ended with (default ones
-/// when phantoms needed them) and its phantoms.
-template <int d>
-void record_run(MU::internal::Untangling_input<d> frame, const MU::internal::Untangling_input<d>& final_input,
-                const MU::internal::Phantom_elements<d>& phantoms, Run_record& record)
+/// Calls `untangle(rest)` with the rest shape as the package reads it: the
+/// rest points of `mesh` (3D rest triangles are laid flat by the package),
+/// or none (regular targets).
+template <int d, typename Untangle>
+Untangling_result with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
 {
-  namespace MUI = MU::internal;
-  frame.targets = final_input.targets;
-  MUI::append_phantom_elements<d>(frame, phantoms);
-  // What AUTOMATIC chose in the run; the fixed flags that decide it are then
-  // dropped, so that elements with fixed vertices only get a target too.
-  const MU::Target_scaling scaling = !frame.targets.empty() && MUI::has_free_boundary_vertex<d>(frame)
-                                       ? MU::Target_scaling::AS_GIVEN : MU::Target_scaling::MATCH_MAP_VOLUME;
-  frame.is_fixed.clear();
-  const MUI::Untangling_problem<d> P = MUI::make_untangling_problem<d>(frame, scaling);
-  record.dimension = d;
-  record.target_orientations = P.reference_orientation;
-  record.target_inverses.assign(P.elements.size() * d * d, 0.);
-  for(std::size_t k = 0; k < P.elements.size(); ++k) {
-    // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
-    const Eigen::Matrix<double, d, d> T = P.gradient_operators[k].template bottomRows<d>() / P.scale;
-    std::copy(T.data(), T.data() + d * d, record.target_inverses.begin() + d * d * P.input_index[k]);
+  if(mesh.rest.empty()) return untangle(CGAL::parameters::default_values());
+  if constexpr(d == 2) {
+    if(mesh.rest_dimension == 3)
+      return untangle(MU::parameters::rest_points(cgal_points<3>(mesh.rest)));
   }
-  record.phantom_simplices.clear();
-  for(const auto& e : phantoms.elements) record.phantom_simplices.push_back(widened<d>(e));
-  record.phantom_vertices.clear();
-  for(const auto& p : phantoms.extra_vertices) {
-    std::array<double, 3> q{0., 0., 0.};
-    for(int c = 0; c < d; ++c) q[c] = p[c];
-    record.phantom_vertices.push_back(q);
-  }
+  return untangle(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
 }
 
 template <int d>
 Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                            Run_record* record)
 {
-  auto in = make_input<d>(mesh, is_fixed);
-  const auto initial = record ? in : MU::internal::Untangling_input<d>();
-  MU::internal::Untangling_options o;
-  o.theta = options.theta;
-  if(options.solver == "lbfgs") o.solver = MU::Solver::LBFGS;
-  else if(options.solver == "newton") o.solver = MU::Solver::NEWTON;
-  else if(options.solver != "auto") throw Invalid_problem("unknown solver '" + options.solver + "' (auto, newton, lbfgs)");
-  o.max_outer_iterations = options.max_iterations;
-  o.max_seconds = options.max_seconds;
-  o.continuation = options.continuation;
-  o.continuation_steps = options.continuation_steps;
-  if(options.progress)
-    o.callback = [&](const MU::Untangling_step& s) { options.progress(s); return true; };
-  MU::internal::Protection_request<d> protection;
-  protection.enabled = options.phantoms;
-  MU::internal::Phantom_elements<d> phantoms;
-  const Untangling_result result = MU::internal::untangle<d>(in, o, protection, &phantoms);
+  std::vector<Point<d>> points = cgal_points<d>(mesh.map);
+  const auto simplices = simplices_of<d>(mesh);
+  const auto fixed = boost::make_function_property_map<std::size_t, bool>(
+    [&is_fixed](std::size_t v) { return !is_fixed.empty() && is_fixed[v]; });
+  std::function<bool(const MU::Untangling_step&)> callback;
+  if(options.progress) callback = [&options](const MU::Untangling_step& s) { options.progress(s); return true; };
+  std::vector<MU::Phantom_element<std::size_t, Point<d>>> phantoms;
+  std::vector<MU::Element_figures> figures;
+
+  const Untangling_result result = with_rest_points<d>(mesh, [&](const auto& rest) {
+    const auto np = rest.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
+                        .maximum_running_time(options.max_seconds).callback(callback);
+    const auto package_np = MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(d),
+                              MU::parameters::solver(options.solver,
+                              MU::parameters::phantom_protection(options.phantoms,
+                              MU::parameters::continuation(options.continuation,
+                              MU::parameters::continuation_steps(options.continuation_steps, np)))));
+    if(!record) return CGAL::untangle_simplex_soup(points, simplices, package_np);
+    return CGAL::untangle_simplex_soup(points, simplices,
+                                       MU::parameters::phantom_output(std::back_inserter(phantoms),
+                                       MU::parameters::element_figures_output(std::back_inserter(figures), package_np)));
+  });
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
-  for(std::size_t v = 0; v < in.positions.size(); ++v)
-    for(int c = 0; c < d; ++c) mesh.map[v][c] = in.positions[v][c];
-  if(record) record_run<d>(initial, in, phantoms, *record);
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(int c = 0; c < d; ++c) mesh.map[v][c] = points[v][c];
+  if(record) {
+    record->dimension = d;
+    record->element_figures = std::move(figures);
+    record->phantom_simplices.clear();
+    record->phantom_vertices.clear();
+    const std::size_t n = mesh.map.size();
+    for(const auto& p : phantoms) {
+      std::array<std::size_t, 4> s{0, 0, 0, 0};
+      for(int i = 0; i <= d; ++i) s[i] = p.vertices[i];
+      record->phantom_simplices.push_back(s);
+    }
+    // Phantom vertices are the ids from n on; their positions come with the phantoms that use them.
+    for(const auto& p : phantoms)
+      for(int i = 0; i <= d; ++i)
+        if(p.vertices[i] >= n) {
+          const std::size_t extra = p.vertices[i] - n;
+          if(extra >= record->phantom_vertices.size()) record->phantom_vertices.resize(extra + 1, {0., 0., 0.});
+          for(int c = 0; c < d; ++c) record->phantom_vertices[extra][c] = p.positions[i][c];
+        }
+  }
   return result;
 }
 
@@ -182,20 +178,6 @@ Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
                                                      reference_orientations(mesh), is_fixed));
 }
 
-/// The Jacobian of the map from the scaled target of element `k` of `record`
-/// onto the simplex `s` at `x` (from edge vectors: no cancellation far from
-/// the origin).
-template <int d>
-Eigen::Matrix<double, d, d> scaled_jacobian(const std::vector<std::array<double, 3>>& x, std::array<std::size_t, 4> s,
-                                            const Run_record& record, std::size_t k)
-{
-  if(record.target_orientations[k] < 0) std::swap(s[0], s[1]);
-  Eigen::Matrix<double, d, d> edges;
-  for(int i = 0; i < d; ++i)
-    for(int c = 0; c < d; ++c) edges(c, i) = x[s[i + 1]][c] - x[s[0]][c];
-  return edges * Eigen::Map<const Eigen::Matrix<double, d, d>>(&record.target_inverses[d * d * k]);
-}
-
 /// det_J and positive of the phantoms (`first` is the number of mesh elements).
 template <int d>
 MU::IO::VTK_fields phantom_cells(const Mesh_file& phantoms, const Run_record& record, std::size_t first)
@@ -204,8 +186,9 @@ MU::IO::VTK_fields phantom_cells(const Mesh_file& phantoms, const Run_record& re
   const std::vector<int> signs = MU::simplex_orientations<d>(points_of<d>(phantoms.map), simplices_of<d>(phantoms));
   std::vector<double> det(m), positive(m);
   for(std::size_t k = 0; k < m; ++k) {
-    det[k] = scaled_jacobian<d>(phantoms.map, phantoms.simplices[k], record, first + k).determinant();
-    positive[k] = signs[k] * record.target_orientations[first + k] > 0;
+    const MU::Element_figures& f = record.element_figures[first + k];
+    det[k] = f.det_J;
+    positive[k] = signs[k] * f.target_orientation > 0;
   }
   return {{"det_J", std::move(det)}, {"positive", std::move(positive), true}};
 }
@@ -217,18 +200,14 @@ MU::IO::VTK_field flags(const char* name, std::size_t size, const std::vector<st
   return f;
 }
 
-/// The distortions of measure_quality() in Untangler.h, per element.
-template <int d>
-void add_distortions(const Mesh_file& mesh, const Run_record& record, MU::IO::VTK_fields& cells)
+/// The figures of the package (Element_figures), per element.
+void add_distortions(const Run_record& record, std::size_t elements, MU::IO::VTK_fields& cells)
 {
-  const std::size_t m = mesh.simplices.size();
-  std::vector<double> det(m), shape(m, 0.), volume(m, 0.);
-  for(std::size_t k = 0; k < m; ++k) {
-    const Eigen::Matrix<double, d, d> J = scaled_jacobian<d>(mesh.map, mesh.simplices[k], record, k);
-    det[k] = J.determinant();
-    if(!(det[k] > 0)) continue;
-    shape[k] = J.squaredNorm() / d / std::pow(det[k], 2. / d);
-    volume[k] = (det[k] + 1 / det[k]) / 2;
+  std::vector<double> det(elements), shape(elements), volume(elements);
+  for(std::size_t k = 0; k < elements; ++k) {
+    det[k] = record.element_figures[k].det_J;
+    shape[k] = record.element_figures[k].shape_distortion;
+    volume[k] = record.element_figures[k].volume_distortion;
   }
   cells.push_back({"det_J", std::move(det)});
   cells.push_back({"shape_distortion", std::move(shape)});
@@ -245,7 +224,7 @@ Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, con
   const std::size_t n = mesh.map.size(), m = simplices.size();
   Map_fields f;
   f.verdict = verdict_of(report);
-  add_distortions<d>(mesh, record, f.cells);
+  add_distortions(record, m, f.cells);
   f.cells.push_back(flags("inverted", m, report.inverted_element_ids));
   f.cells.push_back(flags("input_defect", m, report.input_defect_element_ids));
   f.points.push_back({"fixed", std::vector<double>(n, 0.), true});
@@ -265,9 +244,7 @@ Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, con
 void check_record(const Mesh_file& mesh, const Run_record& record)
 {
   const std::size_t elements = mesh.simplices.size() + record.phantom_simplices.size();
-  const std::size_t d = std::size_t(record.dimension);
-  if(record.dimension != mesh.simplex_size - 1 || record.target_orientations.size() != elements ||
-     record.target_inverses.size() != d * d * elements)
+  if(record.dimension != mesh.simplex_size - 1 || record.element_figures.size() != elements)
     throw Invalid_problem("the run record does not belong to this mesh (" + std::to_string(elements) + " elements)");
 }
 
@@ -355,10 +332,16 @@ Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
   map.triangles = simplices_of<2>(mesh);
   map.reference_orientation = reference_orientations(mesh);
   map.is_fixed = is_fixed;
-  // The targets the untangler uses (make_input): 3D rest triangles laid flat.
-  const auto input = make_input<2>(mesh, {});
-  for(const auto& t : input.targets)
-    map.targets.push_back({{{t[0][0], t[0][1]}, {t[1][0], t[1][1]}, {t[2][0], t[2][1]}}});
+  // The targets the untangler uses: the rest triangles, 3D ones laid flat.
+  if(mesh.rest.size() == mesh.map.size())
+    for(const auto& t : map.triangles) {
+      std::array<Eigen::Vector2d, 3> target;
+      if(mesh.rest_dimension == 3)
+        target = MU::internal::flatten_triangle(mesh.rest[t[0]], mesh.rest[t[1]], mesh.rest[t[2]]);
+      else
+        for(int i = 0; i < 3; ++i) target[i] = Eigen::Vector2d(mesh.rest[t[i]][0], mesh.rest[t[i]][1]);
+      map.targets.push_back({{{target[0][0], target[0][1]}, {target[1][0], target[1][1]}, {target[2][0], target[2][1]}}});
+    }
   if(map.targets.size() != map.triangles.size()) map.targets.clear();
   return map;
 }
@@ -375,8 +358,8 @@ std::vector<int> reference_orientations(const Mesh_file& mesh)
   std::vector<int> orientation(mesh.simplices.size(), 1);
   if(mesh.rest.empty()) {
     // regular targets take the orientation of most of the map, as in the untangler
-    const int sign = mesh.simplex_size == 3 ? MU::internal::map_volume_sign<2>(make_input<2>(mesh, {}))
-                                            : MU::internal::map_volume_sign<3>(make_input<3>(mesh, {}));
+    const int sign = mesh.simplex_size == 3 ? MU::internal::map_volume_sign<2>(map_only<2>(mesh))
+                                            : MU::internal::map_volume_sign<3>(map_only<3>(mesh));
     return std::vector<int>(mesh.simplices.size(), sign);
   }
   if(mesh.simplex_size == 3 && mesh.rest_dimension == 3) return orientation;

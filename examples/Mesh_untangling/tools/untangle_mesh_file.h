@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
+#include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
@@ -17,6 +18,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,10 +30,12 @@ namespace Mesh_untangling_tools {
 using CGAL::Mesh_untangling::IO::Mesh_file;
 using CGAL::Mesh_untangling::Untangling_result;
 
+/// The run's settings, with the package's types and defaults (the library
+/// reads them as named parameters).
 struct Run_options
 {
-  std::string solver = "auto";         // "auto", "newton" or "lbfgs"
-  double theta = -1;                   // < 0: the dimension's default
+  CGAL::Mesh_untangling::Solver solver = CGAL::Mesh_untangling::Solver::AUTOMATIC;
+  std::optional<double> theta;         // none: CGAL::Mesh_untangling::default_theta(dimension)
   std::size_t max_iterations = CGAL::Mesh_untangling::default_number_of_iterations;   // eps steps
   double max_seconds = std::numeric_limits<double>::infinity();
   bool phantoms = true;                // protect a free boundary with phantom elements
@@ -43,9 +47,9 @@ struct Run_options
 /// The problem does not make sense (names what is wrong).
 struct Invalid_problem : std::runtime_error { using std::runtime_error::runtime_error; };
 
-/// What a run used besides the mesh: its phantom elements, and its targets
-/// as the untangler scaled them, so that a map can be measured afterwards the
-/// way the run measured it (the report's scaled det J).
+/// What a run used besides the mesh: its phantom elements, and the figures
+/// of every element (the mesh's, then the phantoms') against its target as
+/// the run scaled it (Mesh_untangling::parameters::element_figures_output).
 struct Run_record
 {
   int dimension = 0;
@@ -53,20 +57,15 @@ struct Run_record
   std::vector<std::array<std::size_t, 4>> phantom_simplices;
   /// the phantom vertices at their final positions (z = 0 in 2D)
   std::vector<std::array<double, 3>> phantom_vertices;
-  /// per mesh element, then per phantom: the orientation of its target
-  /// (+1 or -1) and the inverse of its scaled target's edge matrix in the
-  /// map's units (d x d, column-major), so that det J of the map from the
-  /// target is det([x1 - x0, ..., xd - x0] T) with vertices 0 and 1 swapped
-  /// where the orientation is -1
-  std::vector<int> target_orientations;
-  std::vector<double> target_inverses;
+  /// per mesh element, then per phantom, on the map the run handed back
+  std::vector<CGAL::Mesh_untangling::Element_figures> element_figures;
 };
 
 /// Untangles `mesh.map` in place.  Triangles untangle a planar map (z = 0)
 /// with targets from `mesh.rest` (3D rest triangles are laid flat
 /// isometrically); tetrahedra untangle a 3D map with targets from the rest
 /// positions.  Without rest geometry every target is a regular simplex.
-/// `record`, when given, receives the phantoms and targets the run used.
+/// `record`, when given, receives the phantoms the run used and the figures of every element.
 /// Throws Invalid_problem.
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                      Run_record* record = nullptr);
@@ -96,8 +95,8 @@ struct Verdict
 };
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
-/// Per-element and per-vertex figures of `mesh.map`, measured against the
-/// targets of the run `record`, named as in the VTK files of the tool.
+/// Per-element and per-vertex figures of `mesh.map`, the map the run
+/// `record` handed back, named as in the VTK files of the tool.
 /// Cells: `det_J` (scaled as the report's min scaled det J), `shape_distortion`
 /// tr(JᵀJ)/d / det(J)^(2/d) and `volume_distortion` (det J + 1/det J)/2 (both
 /// 0 where det J <= 0: undefined there), `inverted` and `input_defect`

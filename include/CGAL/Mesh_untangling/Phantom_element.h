@@ -29,6 +29,9 @@ struct Phantom_element
 
   std::array<Vertex, dimension + 1> vertices;  ///< positively oriented with respect to `target`
   std::array<Point, dimension + 1> target;     ///< the shape the element is drawn toward, in the units of the targets of the mesh
+  /// Output only (`phantom_output`): where the vertices are in the map
+  /// handed back, phantom vertices included; ignored in `phantom_elements`.
+  std::array<Point, dimension + 1> positions;
 };
 
 } // namespace Mesh_untangling

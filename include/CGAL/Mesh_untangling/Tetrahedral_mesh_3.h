@@ -44,4 +44,4 @@ typename CGAL::Pointer_property_map<P>::type get(CGAL::vertex_point_t, Tetrahedr
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_TETRAHEDRAL_MESH_3_H

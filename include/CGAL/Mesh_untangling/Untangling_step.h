@@ -30,4 +30,4 @@ struct Untangling_step
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_UNTANGLING_STEP_H

@@ -3,7 +3,7 @@
 #ifndef CGAL_MESH_UNTANGLING_BEST_FIT_PLANE_PROJECTION_H
 #define CGAL_MESH_UNTANGLING_BEST_FIT_PLANE_PROJECTION_H
 
-#include <CGAL/Mesh_untangling/internal/mesh_adaptors.h>
+#include <CGAL/Mesh_untangling/internal/front_ends.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>

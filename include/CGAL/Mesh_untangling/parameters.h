@@ -11,6 +11,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace CGAL {
@@ -27,6 +28,7 @@ enum mesh_untangling_phantom_elements_t { mesh_untangling_phantom_elements };
 enum mesh_untangling_phantom_output_t { mesh_untangling_phantom_output };
 enum mesh_untangling_continuation_t { mesh_untangling_continuation };
 enum mesh_untangling_continuation_steps_t { mesh_untangling_continuation_steps };
+enum mesh_untangling_element_figures_output_t { mesh_untangling_element_figures_output };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -54,6 +56,21 @@ inline std::string to_string(Solver s)
 {
   return s == Solver::LBFGS ? "lbfgs" : s == Solver::NEWTON ? "newton" : "auto";
 }
+
+/// \ingroup PkgMeshUntanglingRef
+/// The solver that `to_string()` names `name` ("auto", "newton" or "lbfgs"); none for another name.
+inline std::optional<Solver> solver_from_string(const std::string& name)
+{
+  for(Solver s : {Solver::AUTOMATIC, Solver::NEWTON, Solver::LBFGS})
+    if(to_string(s) == name) return s;
+  return std::nullopt;
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// The default weight of the size term against the shape term
+/// (`Mesh_untangling::parameters::theta`): 1/128 for triangles (`dimension` 2),
+/// 1/2 for tetrahedra (`dimension` 3), the published values.
+inline double default_theta(int dimension) { return dimension == 2 ? 1. / 128 : 1. / 2; }
 
 /// \ingroup PkgMeshUntanglingRef
 /// How target sizes relate to the map.
@@ -141,10 +158,16 @@ CGAL_MESH_UNTANGLING_PARAMETER(continuation, mesh_untangling_continuation_t)
 /// (default `default_continuation_steps`); a step that fails is halved.
 CGAL_MESH_UNTANGLING_PARAMETER(continuation_steps, mesh_untangling_continuation_steps_t)
 
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// An output iterator receiving one `CGAL::Mesh_untangling::Element_figures`
+/// per element of the map handed back, in the input's order, then one per
+/// phantom element used (in the order of `phantom_output`).
+CGAL_MESH_UNTANGLING_PARAMETER(element_figures_output, mesh_untangling_element_figures_output_t)
+
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 
 } // namespace parameters
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_PARAMETERS_H

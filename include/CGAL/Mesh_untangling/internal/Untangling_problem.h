@@ -324,31 +324,28 @@ void sort_elements_by_colour(Untangling_problem<d>& P)
   permute(P.input_index);
 }
 
-/// Checks the input and builds the normalized problem; throws
-/// std::invalid_argument with a message naming the element or vertex.
+/// The scaling `Target_scaling::AUTOMATIC` stands for on `in`: targets as
+/// given when some are given and a boundary vertex is free (the map's size
+/// is then the free boundary's to choose), else matched to the map's volume.
 template <int d>
-Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
-                                              Target_scaling scaling = Target_scaling::AUTOMATIC,
-                                              double degenerate_quality = 1e-4)
+Target_scaling resolved_target_scaling(const Untangling_input<d>& in, Target_scaling scaling)
+{
+  if(scaling != Target_scaling::AUTOMATIC) return scaling;
+  return (in.targets.empty() || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME
+                                                                  : Target_scaling::AS_GIVEN;
+}
+
+// make_untangling_problem() runs element by element in parallel chunks;
+// every sum in it runs serially in element order over the values they leave,
+// so the problem (its scale, weights, hence the result) has the same bits for
+// any number of threads.
+
+/// P.x: the map centred on its bounding box, with a unit largest extent (P.center, P.scale).
+template <int d>
+void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
 {
   using Vector = Eigen::Matrix<double, d, 1>;
-  using Target = std::array<Vector, d + 1>;
-  validate_input<d>(in);
-  const std::size_t n = in.positions.size(), m = in.elements.size();
-  const std::size_t mesh_m = in.number_of_mesh_elements();
-
-  Untangling_problem<d> P;
-  P.number_of_vertices = n;
-  P.is_fixed.assign(n, 0);
-  for(std::size_t v = 0; v < in.is_fixed.size(); ++v)
-    P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
-  P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
-
-  // Element by element in parallel chunks; every sum below runs serially in
-  // element order over the values they leave, so the problem (its scale,
-  // weights, hence the result) has the same bits for any number of threads.
-
-  // Normalize the map: centred on its bounding box, unit largest extent.
+  const std::size_t n = in.positions.size();
   Vector lo = in.positions[0], hi = lo;
   for(const auto& p : in.positions) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
   P.center = (lo + hi) / 2;
@@ -358,13 +355,25 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     for(std::size_t v = first; v < last; ++v)
       Eigen::Map<Vector>(&P.x[d * v]) = (in.positions[v] - P.center) / P.scale;
   });
+}
 
-  // Targets: orientation, degenerate ones replaced by regular ones of the mean size.
+/// The target of every element, in the units of the input's targets:
+/// regular simplices where none is given (oriented as most of the map),
+/// degenerate ones (mean ratio below `degenerate_quality`) replaced by
+/// regular ones of the mean size that keep the rest element's orientation,
+/// if it has one.  Sets P.reference_orientation and
+/// P.degenerate_targets_replaced; `volume` is scratch space.
+template <int d>
+std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>
+oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untangling_problem<d>& P,
+                 std::vector<double>& volume)
+{
+  using Target = std::array<Eigen::Matrix<double, d, 1>, d + 1>;
+  const std::size_t m = in.elements.size();
   std::vector<Target> targets(m);
   P.reference_orientation.assign(m, 1);
   std::vector<char> degenerate(m, 0);
-  std::vector<double> volume(m);
-  // Without targets, regular simplices take the orientation of most of the map.
+  volume.resize(m);
   const bool map_is_negative = in.targets.empty() && map_volume_sign<d>(in) < 0;
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
@@ -385,7 +394,6 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
       if(degenerate[k]) {
-        // keep the orientation the rest element has, if it has one
         const double vol = in.targets.empty() ? 1. : simplex_volume<d>(in.targets[k]);
         targets[k] = regular_simplex<d>();
         for(auto& p : targets[k]) p *= regular_size;
@@ -394,35 +402,50 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
       P.reference_orientation[k] = simplex_volume<d>(targets[k]) > 0 ? 1 : -1;
     }
   });
+  return targets;
+}
 
-  // Target scale.
-  const bool given = !in.targets.empty();
-  if(scaling == Target_scaling::AUTOMATIC)
-    scaling = (!given || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME : Target_scaling::AS_GIVEN;
-  double target_factor = 1. / P.scale;     // AS_GIVEN: same units as the map
-  if(scaling == Target_scaling::MATCH_MAP_VOLUME) {
-    std::vector<double>& image_volume = volume;   // (the target volumes are read no more)
-    std::vector<double> target_volume(mesh_m);
-    for_each_chunk(mesh_m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
-      for(std::size_t k = first; k < last; ++k) {
-        Target image;
-        for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
-        image_volume[k] = simplex_volume<d>(image) * P.reference_orientation[k];
-        target_volume[k] = std::abs(simplex_volume<d>(targets[k]));
-      }
-    });
-    double signed_sum = 0, absolute_sum = 0, target_sum = 0;
-    for(std::size_t k = 0; k < mesh_m; ++k) {
-      signed_sum += image_volume[k];
-      absolute_sum += std::abs(image_volume[k]);
-      target_sum += target_volume[k];
+/// The factor from the targets' units to the normalized map's: AS_GIVEN
+/// keeps the map's units; MATCH_MAP_VOLUME makes the mesh's targets as
+/// large, in all, as the map's signed volume (its absolute volume when the
+/// signed one is below a thousandth of it).  `scratch` is reused.
+template <int d>
+double target_scale_factor(const Untangling_input<d>& in, const Untangling_problem<d>& P,
+                           const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets,
+                           Target_scaling scaling, std::vector<double>& scratch)
+{
+  if(scaling != Target_scaling::MATCH_MAP_VOLUME) return 1. / P.scale;
+  const std::size_t mesh_m = in.number_of_mesh_elements();
+  std::vector<double>& image_volume = scratch;
+  image_volume.resize(std::max(image_volume.size(), mesh_m));
+  std::vector<double> target_volume(mesh_m);
+  for_each_chunk(mesh_m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k) {
+      std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
+      for(int i = 0; i <= d; ++i) image[i] = P.point(in.elements[k][i]);
+      image_volume[k] = simplex_volume<d>(image) * P.reference_orientation[k];
+      target_volume[k] = std::abs(simplex_volume<d>(targets[k]));
     }
-    const double wanted = signed_sum > 1e-3 * absolute_sum ? signed_sum : absolute_sum;
-    target_factor = wanted > 0 ? std::pow(wanted / target_sum, 1. / d) : 1.;
+  });
+  double signed_sum = 0, absolute_sum = 0, target_sum = 0;
+  for(std::size_t k = 0; k < mesh_m; ++k) {
+    signed_sum += image_volume[k];
+    absolute_sum += std::abs(image_volume[k]);
+    target_sum += target_volume[k];
   }
+  const double wanted = signed_sum > 1e-3 * absolute_sum ? signed_sum : absolute_sum;
+  return wanted > 0 ? std::pow(wanted / target_sum, 1. / d) : 1.;
+}
 
-  // Elements with positive targets, gradient operators, weights; those with
-  // fixed vertices only are left out, the others keep their order.
+/// The elements of P with positive targets (two vertices swapped where the
+/// target is negative), their gradient operators and weights (summing to 1);
+/// elements with fixed vertices only are left out, the others keep their order.
+template <int d>
+void add_elements(const Untangling_input<d>& in,
+                  const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets, double target_factor,
+                  Untangling_problem<d>& P)
+{
+  const std::size_t m = in.elements.size();
   std::vector<std::size_t> kept(m + 1, 0);   // kept[k]: elements kept before k
   for(std::size_t k = 0; k < m; ++k) {
     bool all_fixed = true;
@@ -431,7 +454,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   }
   const std::size_t kept_count = kept[m];
   P.constant_elements = m - kept_count;
-  P.mesh_elements = kept[mesh_m];
+  P.mesh_elements = kept[in.number_of_mesh_elements()];
   P.elements.resize(kept_count);
   P.input_index.resize(kept_count);
   P.gradient_operators.resize(kept_count);
@@ -441,7 +464,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
       if(kept[k + 1] == kept[k]) continue;
       const std::size_t i = kept[k];
       auto e = in.elements[k];
-      Target t = targets[k];
+      auto t = targets[k];
       for(auto& p : t) p *= target_factor;
       if(P.reference_orientation[k] < 0) { std::swap(e[0], e[1]); std::swap(t[0], t[1]); }
       Eigen::Matrix<double, d, d> E;
@@ -458,10 +481,28 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   double weight_sum = 0;
   for(double w : P.weights) weight_sum += w;
   for(double& w : P.weights) w /= weight_sum;
-  // the colouring's own arrays reach the peak memory of a large run
-  std::vector<Target>().swap(targets);
-  std::vector<double>().swap(volume);
-  std::vector<std::size_t>().swap(kept);
+}
+
+/// Builds the normalized problem of `in`, which must be valid (validate_input()).
+template <int d>
+Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
+                                              Target_scaling scaling = Target_scaling::AUTOMATIC,
+                                              double degenerate_quality = 1e-4)
+{
+  const std::size_t n = in.positions.size();
+  Untangling_problem<d> P;
+  P.number_of_vertices = n;
+  P.is_fixed.assign(n, 0);
+  for(std::size_t v = 0; v < in.is_fixed.size(); ++v)
+    P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
+  P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
+  normalize_map(in, P);
+  {
+    std::vector<double> scratch;
+    auto targets = oriented_targets<d>(in, degenerate_quality, P, scratch);
+    const double target_factor = target_scale_factor<d>(in, P, targets, resolved_target_scaling<d>(in, scaling), scratch);
+    add_elements<d>(in, targets, target_factor, P);
+  }   // (the colouring's own arrays reach the peak memory of a large run)
   sort_elements_by_colour(P);
   return P;
 }

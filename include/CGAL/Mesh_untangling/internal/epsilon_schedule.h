@@ -74,4 +74,4 @@ inline bool energy_settled(double E, double E_prev, double min_det)
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_EPSILON_SCHEDULE_H

@@ -18,6 +18,11 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// What the star of a vertex (2D) or an edge (3D) is: a disk (CLOSED, an
+/// interior star), a half-disk (OPEN, a boundary star), neither, or empty.
+enum class Star_type { CLOSED, OPEN, NON_MANIFOLD, ISOLATED };
+
+
 /// Vertices per chunk of a star loop: a star is tens of elements, so this
 /// amortizes scheduling as `element_chunk_size` does for element loops.
 constexpr std::size_t vertex_chunk_size = 1024;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Phantom triangles (paper §3, MISSION §2): extra elements, in the energy only,
+// Phantom triangles (Garanzha et al., free-boundary paper, section 3): extra elements, in the energy only,
 // that cut the k-covering components (a star wound twice around its centre)
 // out of the admissible set of a 2D free-boundary untangling problem.
 //
@@ -22,13 +22,13 @@
 // Phantoms are plain elements with their own targets, appended to the
 // Untangling_input (Phantom_elements.h): no new unknowns, no change to the
 // energy; the verdict is taken on the mesh's own elements only.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TRIANGLES_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TRIANGLES_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TRIANGLES_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TRIANGLES_H
 
-#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
-#include <CGAL/Mesh_untangling/internal/star_aggregation.h>
-#include <CGAL/Mesh_untangling/internal/star_flattening.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/star_aggregation.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/star_flattening.h>
 
 #include <Eigen/Dense>
 
@@ -192,16 +192,16 @@ compute_phantom_triangles(std::size_t number_of_vertices,
   };
 
   for(std::size_t v = 0; v < number_of_vertices; ++v) {
-    const Star_kind kind = builder.build(v, star);
-    if(kind == Star_kind::ISOLATED) continue;
-    if(kind == Star_kind::NON_MANIFOLD) { ++stats.non_manifold_stars; continue; }
+    const Star_type kind = builder.build(v, star);
+    if(kind == Star_type::ISOLATED) continue;
+    if(kind == Star_type::NON_MANIFOLD) { ++stats.non_manifold_stars; continue; }
     made.clear();
     const std::size_t before = phantoms.size();
     bool complete = true;
     double sum = 0;
     for(double a : star.angles) sum += a;
 
-    if(kind == Star_kind::CLOSED) {
+    if(kind == Star_type::CLOSED) {
       ++stats.interior_stars;
       if(star.outer.size() > 4 && sum > 0) {
         flatten_star_angles(star, phantom_two_pi / sum, theta);   // angles scaled to a full turn
@@ -270,4 +270,4 @@ inline Phantom_elements<2> as_phantom_elements(const std::vector<Phantom_triangl
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TRIANGLES_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TRIANGLES_H

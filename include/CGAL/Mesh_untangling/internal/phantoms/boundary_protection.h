@@ -4,12 +4,12 @@
 // Which phantom elements protect a problem: the user's, or the ones the
 // package builds when some boundary vertex is free (with a fixed boundary a
 // star cannot wind twice without an inverted element, so none are needed).
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_BOUNDARY_PROTECTION_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_BOUNDARY_PROTECTION_H
 
-#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
-#include <CGAL/Mesh_untangling/internal/phantom_tetrahedra.h>
-#include <CGAL/Mesh_untangling/internal/phantom_triangles.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantom_tetrahedra.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantom_triangles.h>
 
 #include <Eigen/Dense>
 
@@ -108,4 +108,4 @@ Protection_summary protect_boundary(Untangling_input<d>& in, const Protection_re
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_BOUNDARY_PROTECTION_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_BOUNDARY_PROTECTION_H

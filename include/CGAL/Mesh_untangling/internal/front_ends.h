@@ -3,11 +3,11 @@
 //
 // Front ends: fill an Untangling_input from a mesh and write the result back.
 // They hold no numerics.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_MESH_ADAPTORS_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_FRONT_ENDS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_FRONT_ENDS_H
 
 #include <CGAL/Mesh_untangling/Phantom_element.h>
-#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -184,10 +184,17 @@ Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange
     for(int i = 0; i <= d; ++i) e[i] = static_cast<std::size_t>(s[i]);
     in.elements.push_back(e);
     if constexpr(is_given<RestRange>()) {
-      std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
-      for(int i = 0; i <= d; ++i)
-        t[i] = e[i] < n && e[i] < rest.size() ? to_vector<d>(rest[e[i]]) : Eigen::Matrix<double, d, 1>::Zero();
-      in.targets.push_back(t);
+      const auto corner = [&](int i) {
+        using Rest_point = std::decay_t<decltype(rest[0])>;
+        return e[i] < n && e[i] < rest.size() ? rest[e[i]] : Rest_point(CGAL::ORIGIN);
+      };
+      if constexpr(d == 2 && Ambient_dimension<std::decay_t<decltype(rest[0])>>::value == 3) {
+        in.targets.push_back(flatten_triangle(corner(0), corner(1), corner(2)));
+      } else {
+        std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
+        for(int i = 0; i <= d; ++i) t[i] = to_vector<d>(corner(i));
+        in.targets.push_back(t);
+      }
     }
   }
   return in;
@@ -226,16 +233,25 @@ Phantom_elements<d> to_phantom_elements(const PhantomRange& phantoms, const Inde
   return out;
 }
 
-/// Writes `phantoms` as `Phantom_element<Vertex, Point>`s through `out`.
+/// Writes `phantoms` as `Phantom_element<Vertex, Point>`s through `out`, with
+/// the positions of their vertices: those of `map` (the mesh's vertices, as
+/// handed back), then the phantom vertices'.
 template <typename Vertex, typename Point, int d, typename OutputIterator, typename VertexOf>
-void output_phantom_elements(const Phantom_elements<d>& phantoms, OutputIterator out, const VertexOf& vertex_of)
+void output_phantom_elements(const Phantom_elements<d>& phantoms, const std::vector<Eigen::Matrix<double, d, 1>>& map,
+                             OutputIterator out, const VertexOf& vertex_of)
 {
+  const auto point = [](const Eigen::Matrix<double, d, 1>& p) {
+    if constexpr(d == 2) return Point(p[0], p[1]);
+    else return Point(p[0], p[1], p[2]);
+  };
+  const std::size_t n = map.size();
   for(std::size_t k = 0; k < phantoms.elements.size(); ++k) {
     Phantom_element<Vertex, Point> p;
     for(int i = 0; i <= d; ++i) {
-      p.vertices[i] = vertex_of(phantoms.elements[k][i]);
-      if constexpr(d == 2) p.target[i] = Point(phantoms.targets[k][i][0], phantoms.targets[k][i][1]);
-      else p.target[i] = Point(phantoms.targets[k][i][0], phantoms.targets[k][i][1], phantoms.targets[k][i][2]);
+      const std::size_t v = phantoms.elements[k][i];
+      p.vertices[i] = vertex_of(v);
+      p.target[i] = point(phantoms.targets[k][i]);
+      p.positions[i] = point(v < n ? map[v] : phantoms.extra_vertices[v - n]);
     }
     *out++ = p;
   }
@@ -245,4 +261,4 @@ void output_phantom_elements(const Phantom_elements<d>& phantoms, OutputIterator
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_FRONT_ENDS_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Phantom tetrahedra (paper §3, MISSION §2): extra elements, in the energy
+// Phantom tetrahedra (Garanzha et al., free-boundary paper, section 3): extra elements, in the energy
 // only, that cut the k-covering components (a tet fan wound twice around an
 // edge, a vertex star covering the sphere twice) out of the admissible set of
 // a 3D free-boundary untangling problem.  Built in the rest (target)
@@ -39,13 +39,13 @@
 //     into sectors aggregated on their own: a fixed outer vertex is never
 //     dropped, and no phantom edge joins two fixed vertices (it would cut
 //     the domain with prescribed values and may make the problem infeasible).
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TETRAHEDRA_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TETRAHEDRA_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TETRAHEDRA_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TETRAHEDRA_H
 
-#include <CGAL/Mesh_untangling/internal/Phantom_elements.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
-#include <CGAL/Mesh_untangling/internal/star_aggregation.h>
-#include <CGAL/Mesh_untangling/internal/star_flattening.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/star_aggregation.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/star_flattening.h>
 
 #include <Eigen/Dense>
 
@@ -624,4 +624,4 @@ compute_phantom_tetrahedra(const std::vector<Eigen::Vector3d>& rest_positions,
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_TETRAHEDRA_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_TETRAHEDRA_H

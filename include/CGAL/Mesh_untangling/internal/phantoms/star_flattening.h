@@ -4,8 +4,8 @@
 // Vertex stars of a triangle soup, ordered and laid flat in the parametric
 // domain (angle-based flattening, paper §3): the first step of the phantom
 // triangle construction (phantom_triangles.h).
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_STAR_FLATTENING_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_STAR_FLATTENING_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_FLATTENING_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_FLATTENING_H
 
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
@@ -26,7 +26,6 @@ namespace internal {
 constexpr double phantom_two_pi = 6.283185307179586476925286766559;
 constexpr double phantom_pi = phantom_two_pi / 2;
 
-enum class Star_kind { CLOSED, OPEN, NON_MANIFOLD, ISOLATED };
 
 /// One vertex star, ordered counter-clockwise in the parametric domain
 /// (the orientation of the targets).  Closed star of k triangles: k outer
@@ -99,7 +98,7 @@ public:
   /// when the link edges, oriented by the targets, chain into one cycle or
   /// one path; otherwise NON_MANIFOLD (and `star` is left unspecified).
   /// O(k log k) for k incident triangles.
-  Star_kind build(std::size_t v, Ordered_star& star)
+  Star_type build(std::size_t v, Ordered_star& star)
   {
     star.centre = v;
     star.outer.clear(); star.angles.clear(); star.radii.clear();
@@ -124,21 +123,21 @@ public:
       if(orientation_[k] < 0) { std::swap(e.from, e.to); std::swap(e.r_from, e.r_to); }
       link_.push_back(e);
     }
-    if(link_.empty()) return Star_kind::ISOLATED;
+    if(link_.empty()) return Star_type::ISOLATED;
 
     // one cycle or one path: in- and out-degrees at most one, at most one start, walk covers all
     std::sort(link_.begin(), link_.end(), [](const Link_entry& a, const Link_entry& b) { return a.from < b.from; });
     heads_.clear();
     for(std::size_t i = 0; i < link_.size(); ++i) {
-      if(i > 0 && link_[i].from == link_[i - 1].from) return Star_kind::NON_MANIFOLD;
+      if(i > 0 && link_[i].from == link_[i - 1].from) return Star_type::NON_MANIFOLD;
       heads_.push_back(link_[i].to);
     }
     std::sort(heads_.begin(), heads_.end());
-    if(std::adjacent_find(heads_.begin(), heads_.end()) != heads_.end()) return Star_kind::NON_MANIFOLD;
+    if(std::adjacent_find(heads_.begin(), heads_.end()) != heads_.end()) return Star_type::NON_MANIFOLD;
     std::size_t starts = 0, start = 0;   // closed: the entry of the smallest outer vertex
     for(std::size_t i = 0; i < link_.size(); ++i)
       if(!std::binary_search(heads_.begin(), heads_.end(), link_[i].from)) { ++starts; start = i; }
-    if(starts > 1) return Star_kind::NON_MANIFOLD;
+    if(starts > 1) return Star_type::NON_MANIFOLD;
 
     std::size_t current = start, steps = 0;
     order_.clear();
@@ -157,7 +156,7 @@ public:
       current = std::size_t(next - link_.begin());
       if(current == start) break;                        // cycle closed
     }
-    if(steps != link_.size()) return Star_kind::NON_MANIFOLD;
+    if(steps != link_.size()) return Star_type::NON_MANIFOLD;
     star.closed = starts == 0;
 
     // radial lengths: average of the targets sharing the edge (centre, outer)
@@ -177,7 +176,7 @@ public:
     const double fallback = known > 0 ? total / known : 1.;
     star.radii.resize(n);
     for(std::size_t j = 0; j < n; ++j) star.radii[j] = count[j] > 0 ? sum[j] / count[j] : fallback;
-    return star.closed ? Star_kind::CLOSED : Star_kind::OPEN;
+    return star.closed ? Star_type::CLOSED : Star_type::OPEN;
   }
 
 private:
@@ -220,4 +219,4 @@ inline Eigen::Vector2d polar_point(double radius, double theta)
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_STAR_FLATTENING_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_FLATTENING_H

@@ -6,10 +6,10 @@
 // It is the yardstick the default solver is measured against, so it stays
 // plain, and it stops where the published code stops: neither earlier (it
 // would look worse than it is) nor later (it would look slower).
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_LBFGS_SOLVER_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_LBFGS_SOLVER_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_LBFGS_SOLVER_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_LBFGS_SOLVER_H
 
-#include <CGAL/Mesh_untangling/internal/Chunked_LBFGS.h>
+#include <CGAL/Mesh_untangling/internal/solvers/Chunked_LBFGS.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 
 #include <LBFGS.h>
@@ -135,4 +135,4 @@ private:
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_LBFGS_SOLVER_H

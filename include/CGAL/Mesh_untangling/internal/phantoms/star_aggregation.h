@@ -6,11 +6,11 @@
 // replaces non-overlapping pairs of adjacent triangles (c, p_i, p_i+1),
 // (c, p_i+1, p_i+2) by the phantom triangle (c, p_i, p_i+2) and drops p_i+1,
 // until the sequence is short enough.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_STAR_AGGREGATION_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_STAR_AGGREGATION_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_AGGREGATION_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_AGGREGATION_H
 
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
-#include <CGAL/Mesh_untangling/internal/star_flattening.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/star_flattening.h>
 
 #include <Eigen/Dense>
 
@@ -191,4 +191,4 @@ inline bool aggregate_sequence(std::vector<Star_node> nodes, bool cyclic, double
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_STAR_AGGREGATION_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_STAR_AGGREGATION_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Phantom elements (paper §3, MISSION §2) in the form the core consumes,
+// Phantom elements (Garanzha et al., free-boundary paper, section 3) in the form the core consumes,
 // whatever made them (2D phantom triangles, 3D phantom tetrahedra, or the
 // user): extra simplices with their own targets, and possibly extra vertices
 // (3D irregular boundary stars), appended to an Untangling_input for the
 // energy and removed before anything is reported or written back.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_ELEMENTS_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_ELEMENTS_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_ELEMENTS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_ELEMENTS_H
 
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
@@ -122,4 +122,4 @@ void remove_phantom_elements(Untangling_input<d>& in)
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOM_ELEMENTS_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_ELEMENTS_H

@@ -7,8 +7,8 @@
 // LBFGSpp, had become the serial part of a 2-thread run.  The chunks and
 // the order in which dot products add them do not depend on the number of
 // threads, so neither do the results.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_CHUNKED_LBFGS_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_CHUNKED_LBFGS_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_CHUNKED_LBFGS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_CHUNKED_LBFGS_H
 
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 
@@ -141,4 +141,4 @@ private:
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_INTERNAL_CHUNKED_LBFGS_H
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_CHUNKED_LBFGS_H

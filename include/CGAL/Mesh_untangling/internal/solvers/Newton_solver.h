@@ -11,12 +11,12 @@
 // eps suffice where a first-order method needs thousands of evaluations.
 // Assembly runs the elements in parallel (TBB) with results independent of
 // the number of threads.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_NEWTON_SOLVER_H
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_NEWTON_SOLVER_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_NEWTON_SOLVER_H
 
 #include <CGAL/assertions.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
-#include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
+#include <CGAL/Mesh_untangling/internal/solvers/LBFGS_solver.h>
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 #include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
@@ -766,4 +766,4 @@ private:
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SOLVERS_NEWTON_SOLVER_H

@@ -1,51 +1,31 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The outer loop: partial minimizations of F(., eps) while eps follows the
-// published schedule, then the verdict on the positions handed back.
-#ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLER_H
-#define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLER_H
+// The outer loop of the published scheme: partial minimizations of
+// F(., eps) while eps follows its schedule, with the tuning that decides
+// when a stage gives up and which solver runs it.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_EPS_LOOP_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_EPS_LOOP_H
 
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
-#include <CGAL/Mesh_untangling/parameters.h>
-#include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
-#include <CGAL/Mesh_untangling/internal/LBFGS_solver.h>
-#include <CGAL/Mesh_untangling/internal/boundary_protection.h>
-#include <CGAL/Mesh_untangling/internal/Newton_solver.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
+#include <CGAL/Mesh_untangling/internal/solvers/LBFGS_solver.h>
+#include <CGAL/Mesh_untangling/internal/solvers/Newton_solver.h>
 
 #include <algorithm>
 #include <chrono>
-#include <random>
-#include <functional>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
-
 namespace internal {
-
-struct Untangling_options
-{
-  double theta = -1;                 // < 0: 1/128 in 2D, 1/2 in 3D
-  Solver solver = Solver::AUTOMATIC;
-  std::size_t max_outer_iterations = default_number_of_iterations;
-  int max_inner_iterations = -1;     // < 0: solver default
-  double max_seconds = std::numeric_limits<double>::infinity();
-  Target_scaling scaling = Target_scaling::AUTOMATIC;
-  std::function<bool(const Untangling_step&)> callback;   // false stops the run
-  Continuation continuation = Continuation::AUTOMATIC;
-  std::size_t continuation_steps = default_continuation_steps;
-  // When the continuation will follow a failed direct untangling, a stall of
-  // stage 0 already tells that the direct way is blocked (see continuation.h).
-  bool give_up_on_stall = false;
-};
-
-constexpr int max_restarts = 10;           // shakes in stage 1
 
 /// Newton's stage 0, when stage 1 follows with regular targets, also gives
 /// up (Stall_test::COUNT_NOT_HALVED) when the count of non-positive elements
@@ -102,40 +82,6 @@ constexpr std::size_t lbfgs_trial_evaluations = 250;
 /// scaling) are left visibly short of the minimum by the looser test.
 constexpr double polish_tolerance = 1e-5;
 constexpr double free_boundary_polish_tolerance = 1e-6;
-
-template <int d>
-double default_theta() { return d == 2 ? 1. / 128 : 1. / 2; }
-
-template <int d>
-std::vector<std::array<double, d>> as_arrays(const std::vector<Eigen::Matrix<double, d, 1>>& points)
-{
-  std::vector<std::array<double, d>> out(points.size());
-  for(std::size_t v = 0; v < points.size(); ++v)
-    for(int c = 0; c < d; ++c) out[v][c] = points[v][c];
-  return out;
-}
-
-/// Distortion figures of the current map (over the mesh elements in the energy).
-template <int d>
-void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
-{
-  r.max_shape_distortion = r.mean_shape_distortion = 0;
-  r.max_volume_distortion = r.mean_volume_distortion = 0;
-  std::size_t positive = 0;
-  for(std::size_t k = 0; k < P.mesh_elements; ++k) {
-    const auto J = jacobian(P, P.x.data(), k);
-    const double D = J.determinant();
-    if(!(D > 0)) continue;
-    const double shape = J.squaredNorm() / d / std::pow(D, 2. / d);
-    const double size = (D + 1 / D) / 2;
-    r.max_shape_distortion = std::max(r.max_shape_distortion, shape);
-    r.max_volume_distortion = std::max(r.max_volume_distortion, size);
-    r.mean_shape_distortion += shape;
-    r.mean_volume_distortion += size;
-    ++positive;
-  }
-  if(positive > 0) { r.mean_shape_distortion /= positive; r.mean_volume_distortion /= positive; }
-}
 
 /// Where one run of the eps loop ended.
 struct Eps_loop_outcome
@@ -415,213 +361,8 @@ private:
   std::size_t least_tangled_count_ = std::numeric_limits<std::size_t>::max();
 };
 
-/// The same problem with a regular target of the same orientation for
-/// every element: well conditioned, so it untangles where badly shaped
-/// targets trap the map.
-template <int d>
-Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const Untangling_problem<d>& P)
-{
-  Untangling_input<d> regular;
-  regular.positions = in.positions;
-  regular.elements = in.elements;
-  regular.is_fixed = in.is_fixed;
-  regular.phantom_elements = in.phantom_elements;
-  regular.phantom_vertices = in.phantom_vertices;
-  for(std::size_t k = 0; k < in.elements.size(); ++k) {
-    auto t = regular_simplex<d>();
-    if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
-    regular.targets.push_back(t);
-  }
-  Untangling_problem<d> R = make_untangling_problem<d>(regular, Target_scaling::MATCH_MAP_VOLUME);
-  R.x = P.x;    // same positions, same normalization
-  return R;
-}
-
-/// Moves the free vertices of every non-positive element at random by up to
-/// a fifth of the element's longest edge (deterministic for a given `random`).
-template <int d>
-void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
-{
-  std::uniform_real_distribution<double> unit(-1., 1.);
-  std::vector<double> reach(P.number_of_vertices, 0.);
-  for(std::size_t k = 0; k < P.elements.size(); ++k) {
-    if(jacobian(P, P.x.data(), k).determinant() > 0) continue;
-    double longest = 0;
-    for(int i = 0; i <= d; ++i)
-      for(int j = i + 1; j <= d; ++j)
-        longest = std::max(longest, (P.point(P.elements[k][i]) - P.point(P.elements[k][j])).norm());
-    for(std::size_t v : P.elements[k]) reach[v] = std::max(reach[v], longest / 5);
-  }
-  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(reach[v] > 0 && !P.is_fixed[v])
-      for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
-}
-
-/// `check(positions, elements, orientation, fixed)` on the mesh part of `in`
-/// (phantoms left out): a report on the mesh alone.
-template <int d, class Check>
-Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                     const std::vector<bool>& is_fixed, const Check& check)
-{
-  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
-  const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
-  const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
-  const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
-  const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
-  return check(as_arrays<d>(positions), elements, orientation, fixed);
-}
-
-/// The invertibility report on the mesh part of `in`: elements and stars.
-template <int d>
-Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                const std::vector<bool>& is_fixed)
-{
-  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
-    return check_local_invertibility<d>(arguments...);
-  });
-}
-
-/// Only what the element orientations decide (the inverted elements of the
-/// mesh part of `in`): the figures before a run, without the cost of the stars.
-template <int d>
-Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                         const std::vector<bool>& is_fixed)
-{
-  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
-    return check_elements<d>(arguments...);
-  });
-}
-
-/// Writes P's free vertices into `in`, in the user's coordinates; the fixed
-/// ones keep their exact input values.
-template <int d>
-void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>& in)
-{
-  for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
-}
-
-/// Untangles `in.positions` in place, directly from the given map (free
-/// vertices only: fixed ones are never written, so they keep their
-/// coordinates bit for bit).
-///
-/// With a free boundary, phantom elements (`protection`) are added to the
-/// energy for the run and removed before the verdict, which concerns the
-/// mesh alone; `phantoms_used`, when given, receives them (phantom vertices
-/// at their final positions).
-///
-/// Stage 0 runs the published scheme with the given targets; when a Newton
-/// factorization is dear, with the published L-BFGS solver first
-/// (Eps_loop::tries_lbfgs_first).  When it stalls
-/// (badly shaped targets can hold a few elements inverted forever), stage 1
-/// untangles toward regular targets from where stage 0 stopped, shaking the
-/// vertices of the elements it cannot untangle when it stalls in turn (a few
-/// times at most); stage 2 goes back to the given targets from that valid map,
-/// keeping it valid.
-template <int d>
-Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_options& options,
-                                    const Protection_request<d>& protection = Protection_request<d>(),
-                                    Phantom_elements<d>* phantoms_used = nullptr)
-{
-  Untangling_result result;
-  result.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
-  result.number_of_vertices = in.positions.size();
-  result.number_of_elements = in.elements.size();
-  const bool targets_given = !in.targets.empty();
-
-  Untangling_problem<d> P;
-  try {
-    validate_input<d>(in);
-    const Protection_summary protected_by = protect_boundary<d>(in, protection);
-    result.number_of_phantom_elements = protected_by.phantom_elements;
-    result.number_of_phantom_vertices = protected_by.phantom_vertices;
-    result.incomplete_phantom_stars = protected_by.incomplete_stars;
-    P = make_untangling_problem<d>(in, options.scaling);
-  } catch(const std::invalid_argument& e) {
-    remove_phantom_elements<d>(in);
-    result.status = Untangling_status::INVALID_INPUT;
-    result.message = e.what();
-    return result;
-  }
-  result.number_of_fixed_vertices = P.number_of_fixed_vertices;
-  result.degenerate_targets_replaced = P.degenerate_targets_replaced;
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed);
-  result.inverted_before = before.inverted_elements;
-  result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
-
-  const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
-  Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
-  const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
-  Eps_loop_outcome outcome;
-  bool settled_by_trial = false;
-  if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
-    const std::vector<double> start = P.x;
-    settled_by_trial = loop.published_trial(P, outcome, [&] {
-      hand_back_free_vertices(P, in);
-      return check_mesh<d>(in, P.reference_orientation, is_fixed).is_locally_invertible();
-    });
-    if(!settled_by_trial) P.x = start;
-  }
-  if(!settled_by_trial)
-    outcome = loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
-  if(outcome.stalled && !options.give_up_on_stall) {
-    Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
-    // with given targets, stage 2 takes over from the first valid map
-    const Eps_loop_goal goal = targets_given ? Eps_loop_goal::VALID_MAP : Eps_loop_goal::SETTLED_ENERGY;
-    if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
-    // Still stuck: typically free vertices collapsed onto each other, a
-    // symmetric configuration the gradient cannot break.  Shake the vertices
-    // of the non-positive elements and go on.
-    std::mt19937 random(1);
-    for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
-      shake_non_positive_elements(R, random);
-      outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
-    }
-    const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
-    P.x = R.x;
-    if(targets_given && untangled && !outcome.stopped && !loop.out_of_time()) {
-      outcome = loop.run(P, 2, Stall_test::NONE);
-      if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
-    }
-  }
-  auto summary = determinant_summary(P, P.x.data());
-  if(loop.restore_least_tangled(P, summary.non_positive)) {
-    outcome.energy = energy<d>(P, P.x.data(), outcome.epsilon, theta);
-    summary = determinant_summary(P, P.x.data());
-  }
-  result.final_energy = outcome.energy;
-  result.final_epsilon = outcome.epsilon;
-  result.min_scaled_det_after = summary.min_det;
-  measure_quality(P, result);
-
-  hand_back_free_vertices(P, in);
-
-  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
-  if(phantoms_used && in.phantom_elements > 0) {   // (without phantoms, targets may be empty)
-    const std::size_t m = in.number_of_mesh_elements(), n = in.number_of_mesh_vertices();
-    phantoms_used->elements.assign(in.elements.begin() + m, in.elements.end());
-    phantoms_used->targets.assign(in.targets.begin() + m, in.targets.end());
-    phantoms_used->extra_vertices.assign(in.positions.begin() + n, in.positions.end());
-  }
-  remove_phantom_elements<d>(in);
-  result.inverted_after = report.inverted_elements;
-  result.overwound_vertices_after = report.overwound_interior_vertices + report.overwound_boundary_vertices;
-  result.overwound_edges_after = report.overwound_interior_edges + report.overwound_boundary_edges;
-  result.input_defects = report.input_defects;
-  result.seconds = loop.seconds();
-
-  if(report.is_locally_invertible()) result.status = Untangling_status::SUCCESS;
-  else if(outcome.numerical_failure) result.status = Untangling_status::NUMERICAL_FAILURE;
-  else if(outcome.stopped && loop.out_of_time()) result.status = Untangling_status::TIME_LIMIT_REACHED;
-  else if(outcome.stopped) result.status = Untangling_status::STOPPED_BY_CALLBACK;
-  else if(report.inverted_elements > 0) result.status = Untangling_status::INVERTED_ELEMENTS_LEFT;
-  else result.status = Untangling_status::COVERINGS_LEFT;
-  return result;
-}
-
 } // namespace internal
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_EPS_LOOP_H

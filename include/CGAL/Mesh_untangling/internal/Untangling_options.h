@@ -1,0 +1,43 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What a run is asked to do: every entry point reads its named parameters
+// into one Untangling_options, which the stages below share.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_OPTIONS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_OPTIONS_H
+
+#include <CGAL/Mesh_untangling/Untangling_step.h>
+#include <CGAL/Mesh_untangling/parameters.h>
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+struct Untangling_options
+{
+  double theta = -1;                 // < 0: 1/128 in 2D, 1/2 in 3D
+  Solver solver = Solver::AUTOMATIC;
+  std::size_t max_outer_iterations = default_number_of_iterations;
+  int max_inner_iterations = -1;     // < 0: solver default
+  double max_seconds = std::numeric_limits<double>::infinity();
+  Target_scaling scaling = Target_scaling::AUTOMATIC;
+  std::function<bool(const Untangling_step&)> callback;   // false stops the run
+  Continuation continuation = Continuation::AUTOMATIC;
+  std::size_t continuation_steps = default_continuation_steps;
+  // When the continuation will follow a failed direct untangling, a stall of
+  // stage 0 already tells that the direct way is blocked (see continuation.h).
+  bool give_up_on_stall = false;
+};
+
+template <int d>
+double default_theta() { return Mesh_untangling::default_theta(d); }
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_OPTIONS_H

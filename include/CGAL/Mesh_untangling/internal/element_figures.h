@@ -1,0 +1,64 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The figures of every element of a run's result against its target as the
+// run scaled it (Mesh_untangling::parameters::element_figures_output).
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_ELEMENT_FIGURES_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_ELEMENT_FIGURES_H
+
+#include <CGAL/Mesh_untangling/Element_figures.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
+
+#include <Eigen/Dense>
+
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// Per element of `result` (the mesh's, then the phantoms'), its figures
+/// against its target scaled as make_untangling_problem() scales it on
+/// `given` (the input the run started from: the scale of matched targets
+/// comes from the given map), with the targets the run ended with (default
+/// ones when phantoms needed them) and its phantoms.  Elements with fixed
+/// vertices only, which the solver leaves out, are measured too.  J comes
+/// from edge vectors in the user's coordinates: no cancellation far from
+/// the origin.
+template <int d>
+std::vector<Element_figures> element_figures(Untangling_input<d> given, const Untangling_input<d>& result,
+                                             const Phantom_elements<d>& phantoms, Target_scaling scaling)
+{
+  using Matrix = Eigen::Matrix<double, d, d>;
+  given.targets = result.targets;
+  append_phantom_elements<d>(given, phantoms);
+  scaling = resolved_target_scaling<d>(given, scaling);
+  given.is_fixed.clear();
+  given.free_boundary_vertex.reset();
+  const Untangling_problem<d> P = make_untangling_problem<d>(given, scaling);
+
+  std::vector<Eigen::Matrix<double, d, 1>> x(result.positions.begin(),
+                                             result.positions.begin() + result.number_of_mesh_vertices());
+  x.insert(x.end(), phantoms.extra_vertices.begin(), phantoms.extra_vertices.end());
+  std::vector<Element_figures> figures(P.elements.size());
+  for(std::size_t i = 0; i < P.elements.size(); ++i) {
+    const std::size_t k = P.input_index[i];
+    auto s = given.elements[k];
+    if(P.reference_orientation[k] < 0) std::swap(s[0], s[1]);
+    Matrix edges;
+    for(int j = 0; j < d; ++j)
+      for(int c = 0; c < d; ++c) edges(c, j) = x[s[j + 1]][c] - x[s[0]][c];
+    // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
+    const Matrix inverse_target = P.gradient_operators[i].template bottomRows<d>() / P.scale;
+    figures[k] = figures_of_jacobian<d>(Matrix(edges * inverse_target), P.reference_orientation[k]);
+  }
+  return figures;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_ELEMENT_FIGURES_H

@@ -1,0 +1,109 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The angles whose signed sums are the windings of stars and edge fans.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_INVERTIBILITY_ANGLES_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_INVERTIBILITY_ANGLES_H
+
+#include <CGAL/Mesh_untangling/internal/invertibility/orientation.h>
+#include <CGAL/Mesh_untangling/internal/vertex_stars.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// Completes the positions (i, j) of a simplex of size N into an even
+/// permutation (i, j, rest...): the face made of `rest` then has the
+/// orientation that the element induces on the link of (i, j).
+template <std::size_t N>
+std::array<int, N> even_permutation_starting_with(int i, int j = -1)
+{
+  std::array<int, N> perm{};
+  std::size_t n = 0;
+  perm[n++] = i;
+  if(j >= 0)
+    perm[n++] = j;
+  for(int k = 0; k < int(N); ++k)
+    if(k != i && k != j)
+      perm[n++] = k;
+  int inversions = 0;
+  for(std::size_t a = 0; a < N; ++a)
+    for(std::size_t b = a + 1; b < N; ++b)
+      inversions += perm[a] > perm[b];
+  if(inversions % 2 != 0)
+    std::swap(perm[N - 2], perm[N - 1]);
+  return perm;
+}
+
+template <std::size_t D>
+std::array<double, D> difference(const std::array<double, D>& a, const std::array<double, D>& b)
+{
+  std::array<double, D> d;
+  for(std::size_t k = 0; k < D; ++k)
+    d[k] = a[k] - b[k];
+  return d;
+}
+
+template <std::size_t D>
+double dot(const std::array<double, D>& a, const std::array<double, D>& b)
+{
+  double s = 0;
+  for(std::size_t k = 0; k < D; ++k)
+    s += a[k] * b[k];
+  return s;
+}
+
+inline double determinant(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+         a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+/// Unsigned angle at `v` of the triangle (v, a, b), in [0, π].
+inline double corner_angle(const Vec2& v, const Vec2& a, const Vec2& b)
+{
+  const Vec2 u = difference(a, v), w = difference(b, v);
+  return std::atan2(std::abs(u[0] * w[1] - u[1] * w[0]), dot(u, w));
+}
+
+/// Unsigned dihedral angle of the tetrahedron (a, b, c, d) at edge ab, in [0, π].
+/// Both atan2 arguments are scaled by |b - a|^2 to avoid a division.
+inline double dihedral_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const Vec3 e = difference(b, a), u = difference(c, a), w = difference(d, a);
+  const double ee = dot(e, e);
+  const double y = std::sqrt(ee) * std::abs(determinant(e, u, w));
+  const double x = ee * dot(u, w) - dot(u, e) * dot(w, e);
+  return std::atan2(y, x);
+}
+
+/// Unsigned solid angle at `v` of the tetrahedron (v, a, b, c), in [0, 2π]
+/// (Van Oosterom and Strackee; atan2 keeps obtuse corners right).
+inline double solid_angle(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 p = difference(a, v), q = difference(b, v), r = difference(c, v);
+  const double lp = std::sqrt(dot(p, p)), lq = std::sqrt(dot(q, q)), lr = std::sqrt(dot(r, r));
+  const double denominator = lp * lq * lr + dot(p, q) * lr + dot(p, r) * lq + dot(q, r) * lp;
+  return 2. * std::atan2(std::abs(determinant(p, q, r)), denominator);
+}
+
+constexpr double two_pi = 6.283185307179586476925286766559;
+
+/// Rounding in angle sums is ~1e-15 per term; far smaller than any real
+/// over-winding of a boundary star, far larger than the noise.
+constexpr double boundary_angle_tolerance = 1e-9;
+
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_INVERTIBILITY_ANGLES_H

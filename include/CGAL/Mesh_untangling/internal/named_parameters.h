@@ -1,0 +1,112 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What every public entry point shares once its front end has built the
+// solver's input: the named parameters read in one place, the one internal
+// entry called, and the outputs the caller asked for written.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_NAMED_PARAMETERS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_NAMED_PARAMETERS_H
+
+#include <CGAL/Mesh_untangling/Element_figures.h>
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/element_figures.h>
+#include <CGAL/Mesh_untangling/internal/front_ends.h>
+#include <CGAL/Mesh_untangling/internal/untangle_impl.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <functional>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <typename NamedParameters, typename Tag>
+constexpr bool is_given_parameter()
+{
+  return !CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value;
+}
+
+/// Reads the parameters every entry point shares.
+template <typename NamedParameters>
+Untangling_options read_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Untangling_options o;
+  o.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta), -1.);
+  o.solver = choose_parameter(get_parameter(np, internal_np::mesh_untangling_solver), Solver::AUTOMATIC);
+  o.scaling = choose_parameter(get_parameter(np, internal_np::mesh_untangling_target_scaling), Target_scaling::AUTOMATIC);
+  o.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), Mesh_untangling::default_number_of_iterations);
+  o.max_seconds = choose_parameter(get_parameter(np, internal_np::maximum_running_time),
+                                   std::numeric_limits<double>::infinity());
+  o.callback = choose_parameter(get_parameter(np, internal_np::callback),
+                                std::function<bool(const Untangling_step&)>());
+  o.continuation = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation),
+                                    Continuation::AUTOMATIC);
+  o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
+                                          Mesh_untangling::default_continuation_steps);
+  return o;
+}
+
+/// The phantom protection asked for: `phantom_protection` and the user's
+/// `phantom_elements` (vertex handles turned into indices by `index_of`).
+template <int d, typename NamedParameters, typename IndexOf>
+Protection_request<d> read_protection(const NamedParameters& np, const IndexOf& index_of)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Protection_request<d> request;
+  request.enabled = choose_parameter(get_parameter(np, internal_np::mesh_untangling_phantom_protection), true);
+  if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_phantom_elements_t>())
+    request.supplied = to_phantom_elements<d>(get_parameter(np, internal_np::mesh_untangling_phantom_elements), index_of);
+  return request;
+}
+
+/// Untangles `input`, built by a front end from the caller's mesh, as the
+/// named parameters `np` ask; `write_back(input)` puts the result into the
+/// caller's mesh unless the input was invalid.  `vertex_of` turns the
+/// solver's vertex indices back into the caller's vertices (`Vertex`), for
+/// the phantoms handed out as `Phantom_element<Vertex, Point>`.
+template <int d, typename Vertex, typename Point, typename NamedParameters, typename IndexOf, typename VertexOf,
+          typename WriteBack>
+Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const NamedParameters& np,
+                                             const IndexOf& index_of, const VertexOf& vertex_of,
+                                             const WriteBack& write_back)
+{
+  using CGAL::parameters::get_parameter;
+  const Untangling_options options = read_options(np);
+  const Protection_request<d> protection = read_protection<d>(np, index_of);
+  constexpr bool wants_phantoms = is_given_parameter<NamedParameters, internal_np::mesh_untangling_phantom_output_t>();
+  constexpr bool wants_figures =
+    is_given_parameter<NamedParameters, internal_np::mesh_untangling_element_figures_output_t>();
+
+  Untangling_input<d> given;
+  if constexpr(wants_figures) given = input;
+  Phantom_elements<d> phantoms;
+  const Untangling_result result = untangle<d>(input, options, protection, &phantoms);
+  if(result.status == Untangling_status::INVALID_INPUT) return result;
+  write_back(input);
+  if constexpr(wants_phantoms)
+    output_phantom_elements<Vertex, Point>(phantoms, input.positions,
+                                           get_parameter(np, internal_np::mesh_untangling_phantom_output), vertex_of);
+  if constexpr(wants_figures) {
+    auto out = get_parameter(np, internal_np::mesh_untangling_element_figures_output);
+    for(const Element_figures& f : element_figures<d>(std::move(given), input, phantoms, options.scaling)) *out++ = f;
+  }
+  return result;
+}
+
+template <typename T> struct Is_named_parameters : std::false_type {};
+template <typename T, typename Tag, typename Base>
+struct Is_named_parameters<Named_function_parameters<T, Tag, Base>> : std::true_type {};
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_NAMED_PARAMETERS_H

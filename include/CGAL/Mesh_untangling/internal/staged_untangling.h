@@ -1,0 +1,211 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One untangling of the given map: stage 0 with the given targets, and when
+// it stalls, stage 1 toward regular targets (with shakes) and stage 2 back
+// to the given ones from the valid map stage 1 found.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_STAGED_UNTANGLING_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_STAGED_UNTANGLING_H
+
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/internal/Eps_loop.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/boundary_protection.h>
+#include <CGAL/Mesh_untangling/internal/verdict.h>
+
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+constexpr int max_restarts = 10;           // shakes in stage 1
+
+/// The same problem with a regular target of the same orientation for
+/// every element: well conditioned, so it untangles where badly shaped
+/// targets trap the map.
+template <int d>
+Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const Untangling_problem<d>& P)
+{
+  Untangling_input<d> regular;
+  regular.positions = in.positions;
+  regular.elements = in.elements;
+  regular.is_fixed = in.is_fixed;
+  regular.phantom_elements = in.phantom_elements;
+  regular.phantom_vertices = in.phantom_vertices;
+  for(std::size_t k = 0; k < in.elements.size(); ++k) {
+    auto t = regular_simplex<d>();
+    if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
+    regular.targets.push_back(t);
+  }
+  Untangling_problem<d> R = make_untangling_problem<d>(regular, Target_scaling::MATCH_MAP_VOLUME);
+  R.x = P.x;    // same positions, same normalization
+  return R;
+}
+
+/// Moves the free vertices of every non-positive element at random by up to
+/// a fifth of the element's longest edge (deterministic for a given `random`).
+template <int d>
+void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  std::vector<double> reach(P.number_of_vertices, 0.);
+  for(std::size_t k = 0; k < P.elements.size(); ++k) {
+    if(jacobian(P, P.x.data(), k).determinant() > 0) continue;
+    double longest = 0;
+    for(int i = 0; i <= d; ++i)
+      for(int j = i + 1; j <= d; ++j)
+        longest = std::max(longest, (P.point(P.elements[k][i]) - P.point(P.elements[k][j])).norm());
+    for(std::size_t v : P.elements[k]) reach[v] = std::max(reach[v], longest / 5);
+  }
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(reach[v] > 0 && !P.is_fixed[v])
+      for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
+}
+
+/// Writes P's free vertices into `in`, in the user's coordinates; the fixed
+/// ones keep their exact input values.
+template <int d>
+void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>& in)
+{
+  for(std::size_t v = 0; v < in.positions.size(); ++v)
+    if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
+}
+
+/// Stage 0: the given targets, after the published scheme's trial where
+/// Solver::AUTOMATIC asks for it (Eps_loop::tries_lbfgs_first).  Gives up on
+/// a stall early (Stall_test::COUNT_NOT_HALVED) when stage 1 would follow.
+template <int d>
+Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, const std::vector<bool>& is_fixed,
+                             Eps_loop<d>& loop, bool regular_targets_follow)
+{
+  Eps_loop_outcome outcome;
+  if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
+    const std::vector<double> start = P.x;
+    if(loop.published_trial(P, outcome, [&] {
+         hand_back_free_vertices(P, in);
+         return check_mesh<d>(in, P.reference_orientation, is_fixed).is_locally_invertible();
+       }))
+      return outcome;
+    P.x = start;
+  }
+  return loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
+}
+
+/// After stage 0 stalled (`outcome`, its end): stage 1 untangles toward regular targets (with
+/// given targets; otherwise the targets are regular already), shaking the
+/// vertices of the non-positive elements when it stalls in turn; stage 2
+/// goes back to the given targets from the valid map stage 1 found, never
+/// trading its validity for shape.  P.x receives the map.
+template <int d>
+Eps_loop_outcome run_stages_1_and_2(Untangling_problem<d>& P, const Untangling_input<d>& in, Eps_loop<d>& loop,
+                                    bool targets_given, Eps_loop_outcome outcome)
+{
+  Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
+  // with given targets, stage 2 takes over from the first valid map
+  const Eps_loop_goal goal = targets_given ? Eps_loop_goal::VALID_MAP : Eps_loop_goal::SETTLED_ENERGY;
+  if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
+  // Still stuck: typically free vertices collapsed onto each other, a
+  // symmetric configuration the gradient cannot break.  Shake the vertices
+  // of the non-positive elements and go on.
+  std::mt19937 random(1);
+  for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
+    shake_non_positive_elements(R, random);
+    outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
+  }
+  const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
+  P.x = R.x;
+  if(targets_given && untangled && !outcome.stopped && !loop.out_of_time()) {
+    outcome = loop.run(P, 2, Stall_test::NONE);
+    if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
+  }
+  return outcome;
+}
+
+/// Untangles `in.positions` in place, directly from the given map (free
+/// vertices only: fixed ones are never written, so they keep their
+/// coordinates bit for bit).  `in` must be valid (validate_input).
+///
+/// With a free boundary, phantom elements (`protection`) are added to the
+/// energy for the run and removed before the verdict, which concerns the
+/// mesh alone; `phantoms_used`, when given, receives them (phantom vertices
+/// at their final positions).
+///
+/// Stage 0 runs the published scheme with the given targets; when a Newton
+/// factorization is dear, with the published L-BFGS solver first
+/// (Eps_loop::tries_lbfgs_first).  When it stalls
+/// (badly shaped targets can hold a few elements inverted forever), stage 1
+/// untangles toward regular targets from where stage 0 stopped, shaking the
+/// vertices of the elements it cannot untangle when it stalls in turn (a few
+/// times at most); stage 2 goes back to the given targets from that valid map,
+/// keeping it valid.
+template <int d>
+Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_options& options,
+                                    const Protection_request<d>& protection = Protection_request<d>(),
+                                    Phantom_elements<d>* phantoms_used = nullptr)
+{
+  Untangling_result result;
+  result.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
+  result.number_of_vertices = in.positions.size();
+  result.number_of_elements = in.elements.size();
+  const bool targets_given = !in.targets.empty();
+
+  Untangling_problem<d> P;
+  try {
+    const Protection_summary protected_by = protect_boundary<d>(in, protection);
+    result.number_of_phantom_elements = protected_by.phantom_elements;
+    result.number_of_phantom_vertices = protected_by.phantom_vertices;
+    result.incomplete_phantom_stars = protected_by.incomplete_stars;
+    if(in.phantom_elements > 0) validate_input<d>(in);   // the phantoms (untangle() validated the mesh)
+    P = make_untangling_problem<d>(in, options.scaling);
+  } catch(const std::invalid_argument& e) {
+    remove_phantom_elements<d>(in);
+    result.status = Untangling_status::INVALID_INPUT;
+    result.message = e.what();
+    return result;
+  }
+  result.number_of_fixed_vertices = P.number_of_fixed_vertices;
+  result.degenerate_targets_replaced = P.degenerate_targets_replaced;
+  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
+  const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed);
+  result.inverted_before = before.inverted_elements;
+  result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
+
+  const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
+  Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
+  const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
+  Eps_loop_outcome outcome = run_stage_0(P, in, is_fixed, loop, regular_targets_follow);
+  if(outcome.stalled && !options.give_up_on_stall) outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome);
+  auto summary = determinant_summary(P, P.x.data());
+  if(loop.restore_least_tangled(P, summary.non_positive)) {
+    outcome.energy = energy<d>(P, P.x.data(), outcome.epsilon, theta);
+    summary = determinant_summary(P, P.x.data());
+  }
+  result.final_energy = outcome.energy;
+  result.final_epsilon = outcome.epsilon;
+  result.min_scaled_det_after = summary.min_det;
+  measure_quality(P, result);
+
+  hand_back_free_vertices(P, in);
+
+  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  if(phantoms_used && in.phantom_elements > 0) {   // (without phantoms, targets may be empty)
+    const std::size_t m = in.number_of_mesh_elements(), n = in.number_of_mesh_vertices();
+    phantoms_used->elements.assign(in.elements.begin() + m, in.elements.end());
+    phantoms_used->targets.assign(in.targets.begin() + m, in.targets.end());
+    phantoms_used->extra_vertices.assign(in.positions.begin() + n, in.positions.end());
+  }
+  remove_phantom_elements<d>(in);
+  record_verdict(report, result);
+  result.seconds = loop.seconds();
+  result.status = final_status(report, outcome.numerical_failure, outcome.stopped, loop.out_of_time());
+  return result;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_STAGED_UNTANGLING_H

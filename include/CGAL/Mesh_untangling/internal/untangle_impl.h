@@ -1,0 +1,154 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The one internal entry every public entry point calls, and its policy of
+// fallbacks in one place: the direct untangling, then (free boundaries,
+// prescribed motions) the continuation from the rest shape, and, when a run
+// fails, whichever of its result and its input has fewer defects.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
+
+#include <CGAL/Mesh_untangling/internal/continuation.h>
+#include <CGAL/Mesh_untangling/internal/staged_untangling.h>
+#include <CGAL/Mesh_untangling/internal/verdict.h>
+
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// The figures of the given map (inverted elements, smallest scaled det J)
+/// that a run from it would report first.
+template <int d>
+Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_options& options)
+{
+  Untangling_result figures;
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
+  figures.inverted_before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed).inverted_elements;
+  figures.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
+  return figures;
+}
+
+/// The run of `untangle` below, whose result may still be worse than its input.
+template <int d>
+Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_options& options,
+                                    const Protection_request<d>& protection, Phantom_elements<d>* phantoms_used)
+{
+  std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest;
+  if(options.continuation != Continuation::NEVER) rest = continuation_start<d>(in);
+  // With every boundary vertex fixed there is no k-covering trap to avoid,
+  // and on such problems (CuboidBlocks) the continuation did not rescue any
+  // case the direct untangling failed: AUTOMATIC leaves them to it.
+  const bool automatic = options.continuation == Continuation::AUTOMATIC;
+  if(!rest || (automatic && !has_free_boundary_vertex<d>(in)))
+    return untangle_directly<d>(in, options, protection, phantoms_used);
+  if(!automatic)
+    return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
+
+  // With phantoms built in the rest shape, a stall of the direct untangling
+  // is the sign that they block it (see above): do not spend the stage
+  // fallbacks on it.
+  const auto given = in.positions;
+  Untangling_options direct = options;
+  direct.give_up_on_stall = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
+  Phantom_elements<d> direct_phantoms;
+  Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);
+  const bool out_of_budget = !(first.seconds < options.max_seconds) || first.outer_iterations >= options.max_outer_iterations;
+  if(first.status == Untangling_status::SUCCESS || first.status == Untangling_status::INVALID_INPUT ||
+     first.status == Untangling_status::STOPPED_BY_CALLBACK || out_of_budget) {
+    if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
+    return first;
+  }
+  const auto direct_map = in.positions;
+  in.positions = given;
+  Untangling_options remaining = options;
+  remaining.max_seconds = options.max_seconds - first.seconds;
+  remaining.max_outer_iterations = options.max_outer_iterations - first.outer_iterations;
+  Phantom_elements<d> continued_phantoms;
+  Untangling_result continued =
+    untangle_by_continuation<d>(in, remaining, protection, *rest, first, &continued_phantoms);
+  if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
+    in.positions = direct_map;   // the direct result was the better one
+    add_work(first, continued);
+    first.continuation_steps = continued.continuation_steps;
+    if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
+    return first;
+  }
+  add_work(continued, first);
+  if(phantoms_used) *phantoms_used = std::move(continued_phantoms);
+  return continued;
+}
+
+/// Puts the input map `given` back into `in` when it has fewer defects than
+/// the failed run's result `r` (inverted elements first, then over-wound
+/// stars, as has_fewer_defects), and makes `r` describe it.  A run that
+/// fails can leave more inverted elements than it was given (CuboidBlocks
+/// rockerarm 344: 502 in, 3,493 out); no run should hand that back.
+template <int d>
+void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix<double, d, 1>>& given,
+                              const Untangling_options& options, Untangling_result& r,
+                              Phantom_elements<d>* phantoms_used)
+{
+  in.positions.swap(given);   // (given holds the result meanwhile)
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
+  const Invertibility_report input = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  Untangling_result kept = r;
+  kept.inverted_after = input.inverted_elements;
+  kept.overwound_vertices_after = input.overwound_interior_vertices + input.overwound_boundary_vertices;
+  kept.overwound_edges_after = input.overwound_interior_edges + input.overwound_boundary_edges;
+  if(!has_fewer_defects(kept, r)) {
+    in.positions.swap(given);
+    return;
+  }
+  kept.input_returned = true;
+  if(input.is_locally_invertible()) kept.status = Untangling_status::SUCCESS;
+  else if(r.status == Untangling_status::INVERTED_ELEMENTS_LEFT || r.status == Untangling_status::COVERINGS_LEFT)
+    kept.status = kept.inverted_after > 0 ? Untangling_status::INVERTED_ELEMENTS_LEFT : Untangling_status::COVERINGS_LEFT;
+  kept.min_scaled_det_after = determinant_summary(P, P.x.data()).min_det;
+  measure_quality(P, kept);
+  const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
+  kept.final_energy = energy<d>(P, P.x.data(), r.final_epsilon, theta);
+  r = kept;
+  if(phantoms_used) *phantoms_used = Phantom_elements<d>();   // they belonged to the result
+}
+
+/// Untangles `in.positions` in place (free vertices only), as
+/// `options.continuation` asks: directly from the given map, by
+/// continuation from the rest shape, or the latter when the former does not
+/// end locally invertible.  `phantoms_used`, when given, receives the
+/// phantoms of the run whose result is returned.  A run that fails hands
+/// back whichever of its result and its input has fewer defects
+/// (keep_the_input_if_better).
+template <int d>
+Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options,
+                           const Protection_request<d>& protection = Protection_request<d>(),
+                           Phantom_elements<d>* phantoms_used = nullptr)
+{
+  try {
+    validate_input<d>(in);   // once: every stage and step below works on copies of this input
+  } catch(const std::invalid_argument& e) {
+    Untangling_result invalid;
+    invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
+    invalid.number_of_vertices = in.positions.size();
+    invalid.number_of_elements = in.elements.size();
+    invalid.message = e.what();
+    return invalid;
+  }
+  std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
+  Untangling_result r = untangle_as_asked<d>(in, options, protection, phantoms_used);
+  if(r.status != Untangling_status::SUCCESS && r.status != Untangling_status::INVALID_INPUT)
+    keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
+  return r;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H

@@ -1,0 +1,115 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What a run reports on the map it hands back: the exact checks of the
+// mesh part (phantoms left out), the status they decide, and the quality figures.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_VERDICT_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_VERDICT_H
+
+#include <CGAL/Mesh_untangling/Element_figures.h>
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Mesh_untangling/internal/Energy.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <int d>
+std::vector<std::array<double, d>> as_arrays(const std::vector<Eigen::Matrix<double, d, 1>>& points)
+{
+  std::vector<std::array<double, d>> out(points.size());
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(int c = 0; c < d; ++c) out[v][c] = points[v][c];
+  return out;
+}
+
+/// Distortion figures of the current map (over the mesh elements in the energy).
+template <int d>
+void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
+{
+  r.max_shape_distortion = r.mean_shape_distortion = 0;
+  r.max_volume_distortion = r.mean_volume_distortion = 0;
+  std::size_t positive = 0;
+  for(std::size_t k = 0; k < P.mesh_elements; ++k) {
+    const Element_figures f = figures_of_jacobian<d>(jacobian(P, P.x.data(), k));
+    if(!(f.det_J > 0)) continue;
+    const double shape = f.shape_distortion, size = f.volume_distortion;
+    r.max_shape_distortion = std::max(r.max_shape_distortion, shape);
+    r.max_volume_distortion = std::max(r.max_volume_distortion, size);
+    r.mean_shape_distortion += shape;
+    r.mean_volume_distortion += size;
+    ++positive;
+  }
+  if(positive > 0) { r.mean_shape_distortion /= positive; r.mean_volume_distortion /= positive; }
+}
+
+/// `check(positions, elements, orientation, fixed)` on the mesh part of `in`
+/// (phantoms left out): a report on the mesh alone.
+template <int d, class Check>
+Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                     const std::vector<bool>& is_fixed, const Check& check)
+{
+  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
+  const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
+  const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
+  const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
+  const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
+  return check(as_arrays<d>(positions), elements, orientation, fixed);
+}
+
+/// The invertibility report on the mesh part of `in`: elements and stars.
+template <int d>
+Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                const std::vector<bool>& is_fixed)
+{
+  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+    return check_local_invertibility<d>(arguments...);
+  });
+}
+
+/// Only what the element orientations decide (the inverted elements of the
+/// mesh part of `in`): the figures before a run, without the cost of the stars.
+template <int d>
+Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
+                                         const std::vector<bool>& is_fixed)
+{
+  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+    return check_elements<d>(arguments...);
+  });
+}
+
+
+/// Copies the exact checks' counts of the map handed back into `r`.
+inline void record_verdict(const Invertibility_report& report, Untangling_result& r)
+{
+  r.inverted_after = report.inverted_elements;
+  r.overwound_vertices_after = report.overwound_interior_vertices + report.overwound_boundary_vertices;
+  r.overwound_edges_after = report.overwound_interior_edges + report.overwound_boundary_edges;
+  r.input_defects = report.input_defects;
+}
+
+/// How a run ended: SUCCESS exactly when the exact checks find the map
+/// locally invertible; otherwise why the run stopped, else what is left.
+inline Untangling_status final_status(const Invertibility_report& report, bool numerical_failure, bool stopped,
+                                      bool out_of_time)
+{
+  if(report.is_locally_invertible()) return Untangling_status::SUCCESS;
+  if(numerical_failure) return Untangling_status::NUMERICAL_FAILURE;
+  if(stopped && out_of_time) return Untangling_status::TIME_LIMIT_REACHED;
+  if(stopped) return Untangling_status::STOPPED_BY_CALLBACK;
+  if(report.inverted_elements > 0) return Untangling_status::INVERTED_ELEMENTS_LEFT;
+  return Untangling_status::COVERINGS_LEFT;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_VERDICT_H
