@@ -4,7 +4,9 @@
 // untangle_mesh: the command-line tool.  Reads a tangled mesh, untangles it,
 // writes the result whole (or not at all), checks local invertibility on the
 // coordinates as written, and says so with its exit code:
-//   0 locally invertible, 1 not (result still written), 2 bad usage or input.
+//   0 locally invertible, 1 not (result still written), 2 bad usage or input,
+//   3 inverted elements (or over-wound stars) with only fixed vertices are left:
+//     nothing can repair them (result still written).
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
@@ -45,6 +47,11 @@ struct Arguments
   std::size_t continuation_steps = MU::default_continuation_steps;
   int threads = 0;              // 0: every core
 };
+
+/// The exit code of a run whose map is as good as its fixed vertices allow,
+/// but not locally invertible: elements (or stars) with only fixed vertices
+/// are inverted, and nothing can repair them.
+constexpr int exit_unrepairable = 3;
 
 /// Bad usage or input: reported, nothing written, exit code 2.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
@@ -257,6 +264,7 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["overwound_vertices"] = v.overwound_vertices;
   j["overwound_edges"] = v.overwound_edges;
   j["input_defects"] = v.input_defects;
+  j["input_defect_stars"] = v.input_defect_stars;
   j["non_manifold_stars"] = v.non_manifold;
   j["overwound_vertices_before"] = c.before.overwound_vertices;
   j["overwound_edges_before"] = c.before.overwound_edges;
@@ -373,6 +381,8 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                  "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
                  r.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
                  verdict.input_defects, r.number_of_phantom_elements, r.seconds);
+    if(!verdict.locally_invertible)
+      std::fprintf(stderr, "why: %s\n", r.message.empty() ? MU::to_string(r.status).c_str() : r.message.c_str());
     if(r.continuation_steps > 0)
       std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible\n", r.continuation_steps);
     if(r.input_returned)
@@ -381,6 +391,10 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                  mesh.simplex_size == 3 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
                  run.checks.boundary_after.intersecting_pairs);
   }
+  // Said even with --quiet: the targets are not all the ones given.
+  if(run.result.degenerate_targets_replaced > 0)
+    std::fprintf(stderr, "untangle_mesh: warning: %zu rest elements are degenerate (flat, or nearly so) and were "
+                 "replaced by regular targets\n", run.result.degenerate_targets_replaced);
   // Said even with --quiet: the file asked for holds less than one may think.
   if(!args.phantoms.empty() && run.record.phantom_simplices.empty())
     std::fprintf(stderr, "untangle_mesh: note: no phantom element was used (no free boundary vertex, or none "
@@ -410,7 +424,8 @@ int run(const Arguments& args)
   run.result = untangle_mesh_file(mesh, run.fixed, run_options(args), &run.record);
   const Verdict verdict = write_outputs(args, mesh, run);
   print_summary(args, mesh, run, verdict);
-  return verdict.locally_invertible ? 0 : 1;
+  if(verdict.locally_invertible) return 0;
+  return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
 }
 
 // CLI11's PositiveNumber and NonNegativeNumber state their range as "0.000000
@@ -439,7 +454,8 @@ int main(int argc, char** argv)
 {
   Arguments args;
   CLI::App app{"Untangles a 2D triangle map or a tetrahedral mesh until it is locally invertible.\n"
-               "Exit code: 0 locally invertible, 1 not (result written anyway), 2 bad usage or input."};
+               "Exit code: 0 locally invertible, 1 not (result written anyway), 2 bad usage or input, 3 inverted "
+               "elements whose vertices are all fixed are left (nothing can repair them; result written)."};
   app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .input")
     ->required();
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Command-line tests of untangle_mesh: exit codes (0 locally invertible,
-# 1 not, 2 bad usage or input), what is written (and that nothing is written
+# 1 not, 2 bad usage or input, 3 inverted elements with fixed vertices only), what is written (and that nothing is written
 # on bad input), error messages, the JSON report, fixed vertices and the
 # real data sets when present.
 #
@@ -767,6 +767,32 @@ if [ -n "$DATA" ] && [ -f "$joint/parameter.vtk" ]; then
 fi
 
 #
+# Every vertex fixed and some triangles inverted: nothing can repair them.
+# Exit 3, never "locally invertible", and the report counts the elements that
+# the .vtk field 'input_defect' flags.
+mkdir verdict && cd verdict || exit 1
+"$MAKE" square 6 1 3 allfixed.vtk > /dev/null 2>&1
+seq 0 48 > allfixed.txt
+run allfixed allfixed.vtk --rest allfixed-rest.vtk --fixed allfixed.txt -o allfixed-out.vtk --report allfixed.json
+check "all vertices fixed, triangles inverted: exit 3" rc_is allfixed 3
+check "all fixed: not locally invertible" json_is allfixed.json locally_invertible false
+check "all fixed: the status says so" grep -q 'nothing can repair them' allfixed.json
+check "all fixed: the summary says why" err_has allfixed 'why: .*only fixed vertices'
+check "all fixed: input defects counted" json_positive allfixed.json input_defects
+check "all fixed: the report counts what the .vtk flags" \
+  [ "$(vtk_sum allfixed-out.vtk input_defect)" = "$(json_get allfixed.json input_defects)" ]
+# The same square scaled by 1e150: the same verdict.
+awk 'BEGIN { points = 0 } /^POINTS/ { points = $2; print; next }
+     points > 0 { printf "%.17g %.17g %.17g\n", $1 * 1e150, $2 * 1e150, $3 * 1e150; points--; next } { print }' \
+  allfixed.vtk > huge.vtk
+awk 'BEGIN { points = 0 } /^POINTS/ { points = $2; print; next }
+     points > 0 { printf "%.17g %.17g %.17g\n", $1 * 1e150, $2 * 1e150, $3 * 1e150; points--; next } { print }' \
+  allfixed-rest.vtk > huge-rest.vtk
+run huge huge.vtk --rest huge-rest.vtk -o huge-out.vtk --report huge.json -q
+check "scaled by 1e150: exit 0" rc_is huge 0
+check "scaled by 1e150: no false covering" json_is huge.json overwound_vertices 0
+cd .. || exit 1
+
 # Real data (../shared/data), when present.
 #
 if [ -n "$DATA" ] && [ -d "$DATA/tlc-format" ]; then

@@ -158,9 +158,11 @@ Verdict verdict_of(const MU::Invertibility_report& report)
   v.inverted = report.inverted_elements;
   v.overwound_vertices = report.overwound_interior_vertices + report.overwound_boundary_vertices;
   v.overwound_edges = report.overwound_interior_edges + report.overwound_boundary_edges;
-  v.input_defects = report.input_defects;
+  v.input_defects = report.input_defect_element_ids.size();
+  v.input_defect_stars = report.input_defect_vertex_ids.size() + report.input_defect_edges.size();
   v.non_manifold = report.non_manifold;
   v.locally_invertible = report.is_locally_invertible();
+  v.no_repairable_defect = report.has_no_repairable_defect();
   v.overwound_interior_vertices = report.overwound_interior_vertices;
   v.overwound_boundary_vertices = report.overwound_boundary_vertices;
   v.overwound_interior_edges = report.overwound_interior_edges;

@@ -83,9 +83,12 @@ struct Verdict
   std::size_t inverted = 0;
   std::size_t overwound_vertices = 0;
   std::size_t overwound_edges = 0;
-  std::size_t input_defects = 0;
+  std::size_t input_defects = 0;        ///< inverted elements whose vertices are all fixed
+  std::size_t input_defect_stars = 0;   ///< over-wound stars and edge fans of such elements only
   std::size_t non_manifold = 0;
-  bool locally_invertible = false;
+  bool locally_invertible = false;      ///< no defect at all, input defects included
+  /// every defect that a free vertex could repair is gone (input defects may be left)
+  bool no_repairable_defect = false;
   // The same counts apart, and the windings (see Invertibility_report).
   std::size_t overwound_interior_vertices = 0;
   std::size_t overwound_boundary_vertices = 0;

@@ -42,6 +42,8 @@ struct Invertibility_report
   std::vector<std::size_t> input_defect_element_ids;          ///< sorted
   std::vector<std::size_t> input_defect_vertex_ids;           ///< sorted
   std::vector<std::array<std::size_t, 2>> input_defect_edges; ///< 3D, sorted pairs
+  std::vector<std::size_t> non_manifold_vertex_ids;           ///< sorted
+  std::vector<std::array<std::size_t, 2>> non_manifold_edges; ///< 3D, sorted pairs
 
   /// extreme windings over the interior stars checked (vertices, and 3D edges); 1 when there is none
   double min_covering = 1.;
@@ -49,12 +51,21 @@ struct Invertibility_report
   /// largest angle sum over a full turn among boundary stars checked; 0 when there is none
   double max_boundary_covering = 0.;
 
-  /// no inverted element and no over-wound star, input defects and non-manifold stars aside
-  bool is_locally_invertible() const
+  /// no inverted element and no over-wound star that a free vertex could
+  /// repair (input defects and non-manifold stars aside): what an untangling
+  /// run can reach
+  bool has_no_repairable_defect() const
   {
     return inverted_elements == 0 && overwound_interior_vertices == 0 &&
            overwound_boundary_vertices == 0 && overwound_interior_edges == 0 &&
            overwound_boundary_edges == 0;
+  }
+
+  /// the map is locally invertible: no inverted element, no over-wound star,
+  /// input defects included, and every star checked (none non-manifold)
+  bool is_locally_invertible() const
+  {
+    return has_no_repairable_defect() && input_defects == 0 && non_manifold == 0;
   }
 };
 

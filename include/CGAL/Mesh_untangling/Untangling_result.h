@@ -13,13 +13,17 @@ namespace Mesh_untangling {
 /// How an untangling run ended.
 enum class Untangling_status
 {
-  SUCCESS,                 ///< every element positive, no k-covering (input defects aside)
+  SUCCESS,                 ///< every element positive, no k-covering: the map is locally invertible
   INVERTED_ELEMENTS_LEFT,  ///< the iteration budget ran out with inverted elements left
   COVERINGS_LEFT,          ///< no element inverted, but some vertex star or edge fan is wound twice
   TIME_LIMIT_REACHED,      ///< `maximum_running_time` ran out before success
   STOPPED_BY_CALLBACK,     ///< the callback returned `false` before success
   NUMERICAL_FAILURE,       ///< the energy or its gradient stopped being finite and could not be recovered
-  INVALID_INPUT            ///< the input violates a precondition (see `message`)
+  INVALID_INPUT,           ///< the input violates a precondition (see `message`)
+  /// every defect a free vertex could repair is gone, but inverted elements
+  /// (or over-wound stars) whose vertices are all fixed are left: nothing
+  /// can repair them (`input_defects`, `input_defect_stars`)
+  UNREPAIRABLE_DEFECTS_LEFT
 };
 
 /// \ingroup PkgMeshUntanglingRef
@@ -34,6 +38,8 @@ inline std::string to_string(Untangling_status status)
     case Untangling_status::STOPPED_BY_CALLBACK: return "the callback stopped the run before the map became locally invertible";
     case Untangling_status::NUMERICAL_FAILURE: return "the energy stopped being finite and could not be recovered";
     case Untangling_status::INVALID_INPUT: return "invalid input";
+    case Untangling_status::UNREPAIRABLE_DEFECTS_LEFT:
+      return "inverted elements whose vertices are all fixed are left: nothing can repair them";
   }
   return "unknown status";
 }
@@ -45,7 +51,7 @@ inline std::string to_string(Untangling_status status)
 struct Untangling_result
 {
   Untangling_status status = Untangling_status::INVALID_INPUT;
-  std::string message;                 ///< details for INVALID_INPUT and NUMERICAL_FAILURE
+  std::string message;                 ///< what went wrong (names the element or vertex where one is to blame); empty on success
 
   std::size_t number_of_vertices = 0;
   std::size_t number_of_elements = 0;
@@ -59,7 +65,11 @@ struct Untangling_result
   std::size_t inverted_after = 0;      ///< inverted elements in the result (input defects excluded)
   std::size_t overwound_vertices_after = 0; ///< vertex stars wound more than once (2D angle, 3D solid angle)
   std::size_t overwound_edges_after = 0;    ///< 3D edge fans wound more than once
-  std::size_t input_defects = 0;       ///< defects that fixed vertices alone determine: not repairable, not a failure
+  /// inverted elements whose vertices are all fixed: nothing can repair them,
+  /// and the map is not locally invertible (UNREPAIRABLE_DEFECTS_LEFT)
+  std::size_t input_defects = 0;
+  /// over-wound vertex stars and edge fans whose elements have only fixed vertices
+  std::size_t input_defect_stars = 0;
   /// the run failed, and the least tangled map it went through had more
   /// defects (inverted elements first, then over-wound stars) than the
   /// input: the input map was handed back unchanged, and the figures

@@ -72,8 +72,11 @@ std::size_t number_of_inverted_elements(const std::vector<std::array<double, D>>
 /// fan), angles being signed by each element's orientation relative to its
 /// reference.  An interior star winds an integer number of times and must
 /// wind once; a boundary star must not turn more than once.  Stars that are
-/// not manifold are counted in `non_manifold` and skipped.  Defects whose
-/// elements have only fixed vertices are reported as input defects.
+/// not manifold are listed in `non_manifold_vertex_ids` (and, 3D,
+/// `non_manifold_edges`) and not checked: the map is then not called locally
+/// invertible.  Defects whose elements have only fixed vertices are reported
+/// as input defects.  Angles are measured on the positions scaled by a power
+/// of two (exact), so that the verdict is the same at any scale.
 /// Runs in O(n log d) for n simplices and largest star size d; vertices are
 /// checked in fixed chunks, concurrently when TBB is linked, and the report,
 /// lists included, is the same for any number of threads.
@@ -95,13 +98,14 @@ Invertibility_report check_local_invertibility(const std::vector<std::array<doub
 
   const std::size_t n = positions.size();
   const internal::Vertex_stars stars = internal::build_vertex_stars(n, simplices);
+  const auto scaled = internal::scaled_for_angles(positions, simplices);
   if constexpr(D == 3)
     internal::check_vertex_chunks(n, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
       internal::Defect_recorder record(part, only_fixed);
-      internal::visit_edge_fans_3(positions, simplices, reference_orientation, signs, stars, first, last,
+      internal::visit_edge_fans_3(scaled, simplices, reference_orientation, signs, stars, first, last,
         [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto& fan) {
           if(type == internal::Star_type::NON_MANIFOLD)
-            ++part.non_manifold;
+            record.non_manifold_edge(a, b);
           else if(record.is_overwound(type, sum, internal::two_pi))
             record.edge(a, b, type, fan);
         });
@@ -110,14 +114,14 @@ Invertibility_report check_local_invertibility(const std::vector<std::array<doub
     internal::Defect_recorder record(part, only_fixed);
     auto check_vertex = [&](std::size_t v, internal::Star_type type, double sum, const auto& star) {
       if(type == internal::Star_type::NON_MANIFOLD)
-        ++part.non_manifold;
+        record.non_manifold_vertex(v);
       else if(record.is_overwound(type, sum, D == 2 ? internal::two_pi : 2 * internal::two_pi))
         record.vertex(v, type, star);
     };
     if constexpr(D == 2)
-      internal::visit_vertex_stars_2(positions, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+      internal::visit_vertex_stars_2(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
     else
-      internal::visit_vertex_stars_3(positions, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+      internal::visit_vertex_stars_3(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
   });
   return report;
 }
@@ -133,8 +137,9 @@ inline std::vector<double> vertex_covering_numbers_2(const std::vector<std::arra
   std::vector<double> covering(positions.size(), 0.);
   const auto signs = internal::relative_signs<2>(positions, triangles, reference_orientation);
   const auto stars = internal::build_vertex_stars(positions.size(), triangles);
+  const auto scaled = internal::scaled_for_angles(positions, triangles);
   internal::for_each_vertex_chunk(positions.size(), [&](std::size_t, std::size_t first, std::size_t last) {
-    internal::visit_vertex_stars_2(positions, triangles, reference_orientation, signs, stars, first, last,
+    internal::visit_vertex_stars_2(scaled, triangles, reference_orientation, signs, stars, first, last,
       [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / internal::two_pi; });
   });
   return covering;
@@ -149,8 +154,9 @@ inline std::vector<double> vertex_covering_numbers_3(const std::vector<std::arra
   std::vector<double> covering(positions.size(), 0.);
   const auto signs = internal::relative_signs<3>(positions, tets, reference_orientation);
   const auto stars = internal::build_vertex_stars(positions.size(), tets);
+  const auto scaled = internal::scaled_for_angles(positions, tets);
   internal::for_each_vertex_chunk(positions.size(), [&](std::size_t, std::size_t first, std::size_t last) {
-    internal::visit_vertex_stars_3(positions, tets, reference_orientation, signs, stars, first, last,
+    internal::visit_vertex_stars_3(scaled, tets, reference_orientation, signs, stars, first, last,
       [&](std::size_t v, internal::Star_type, double sum, const auto&) { covering[v] = sum / (2 * internal::two_pi); });
   });
   return covering;
@@ -174,9 +180,10 @@ inline std::vector<Edge_covering> edge_covering_numbers_3(const std::vector<std:
 {
   const auto signs = internal::relative_signs<3>(positions, tets, reference_orientation);
   const auto stars = internal::build_vertex_stars(positions.size(), tets);
+  const auto scaled = internal::scaled_for_angles(positions, tets);
   std::vector<std::vector<Edge_covering>> parts(internal::number_of_vertex_chunks(positions.size()));
   internal::for_each_vertex_chunk(positions.size(), [&](std::size_t chunk, std::size_t first, std::size_t last) {
-    internal::visit_edge_fans_3(positions, tets, reference_orientation, signs, stars, first, last,
+    internal::visit_edge_fans_3(scaled, tets, reference_orientation, signs, stars, first, last,
       [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto&) {
         parts[chunk].push_back({{a, b}, sum / internal::two_pi, type == internal::Star_type::OPEN,
                                 type != internal::Star_type::NON_MANIFOLD});

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <string>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -31,6 +32,8 @@ struct Untangling_options
   // When the continuation will follow a failed direct untangling, a stall of
   // stage 0 already tells that the direct way is blocked (see continuation.h).
   bool give_up_on_stall = false;
+  // A named parameter out of its range, in words (the run is INVALID_INPUT).
+  std::string invalid_parameter;
 };
 
 template <int d>

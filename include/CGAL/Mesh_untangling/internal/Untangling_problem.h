@@ -104,7 +104,7 @@ struct Untangling_problem
 
   std::size_t number_of_vertices = 0;
   std::vector<double> x;                            // d coordinates per vertex, normalized
-  std::vector<char> is_fixed;
+  std::vector<char> is_fixed;                       // 1: fixed by the caller, 2: in no element (held), 0: free
   std::vector<Simplex> elements;
   std::vector<Gradient_operator> gradient_operators;
   std::vector<double> weights;                      // target volumes, summing to 1
@@ -144,11 +144,11 @@ bool fixed_vertices_span_space(const Untangling_problem<d>& P)
   if(P.number_of_fixed_vertices <= std::size_t(d)) return false;
   Vector mean = Vector::Zero();
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(P.is_fixed[v]) mean += P.point(v);
+    if(P.is_fixed[v] == 1) mean += P.point(v);
   mean /= double(P.number_of_fixed_vertices);
   Matrix scatter = Matrix::Zero();
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(P.is_fixed[v]) scatter.noalias() += (P.point(v) - mean) * (P.point(v) - mean).transpose();
+    if(P.is_fixed[v] == 1) scatter.noalias() += (P.point(v) - mean) * (P.point(v) - mean).transpose();
   // squared widths, increasing: a thickness of 1e-3 of the extent is a ratio of 1e-6
   const Vector squared_widths = Eigen::SelfAdjointEigenSolver<Matrix>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
   return squared_widths(0) > 1e-6 * squared_widths(d - 1);
@@ -291,6 +291,45 @@ void validate_input(const Untangling_input<d>& in)
     }
 }
 
+/// Rejects elements that make a star ambiguous: the same vertices twice
+/// (in any order), and a facet (2D: an edge, 3D: a triangle) shared by more
+/// than two elements.  Throws std::invalid_argument naming the elements.
+template <int d>
+void validate_manifold_facets(const Untangling_input<d>& in)
+{
+  using Facet = std::array<std::size_t, d>;
+  const std::size_t m = in.number_of_mesh_elements();
+  std::vector<std::pair<std::array<std::size_t, d + 1>, std::size_t>> sorted(m);
+  for(std::size_t k = 0; k < m; ++k) {
+    sorted[k] = {in.elements[k], k};
+    std::sort(sorted[k].first.begin(), sorted[k].first.end());
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for(std::size_t i = 1; i < m; ++i)
+    if(sorted[i].first == sorted[i - 1].first)
+      throw std::invalid_argument("elements " + std::to_string(sorted[i - 1].second) + " and " +
+                                  std::to_string(sorted[i].second) + " have the same vertices");
+  std::vector<std::pair<Facet, std::size_t>> facets;
+  facets.reserve((d + 1) * m);
+  for(const auto& [s, k] : sorted)
+    for(int skip = 0; skip <= d; ++skip) {
+      Facet f;
+      for(int i = 0, j = 0; i <= d; ++i)
+        if(i != skip) f[j++] = s[i];
+      facets.push_back({f, k});
+    }
+  std::sort(facets.begin(), facets.end());
+  for(std::size_t i = 2; i < facets.size(); ++i)
+    if(facets[i].first == facets[i - 2].first) {
+      std::string names;
+      for(int j = 0; j < d; ++j) names += (j ? " " : "") + std::to_string(facets[i].first[j]);
+      throw std::invalid_argument(std::string(d == 2 ? "edge (" : "face (") + names + ") is shared by elements " +
+                                  std::to_string(facets[i - 2].second) + ", " + std::to_string(facets[i - 1].second) +
+                                  " and " + std::to_string(facets[i].second) +
+                                  ": more than two elements make its stars non-manifold");
+    }
+}
+
 /// Stores the mesh's elements, then the phantoms, colour by colour (see
 /// Untangling_problem::colour_start), each colour in element order: the
 /// element loops then read every array sequentially.
@@ -335,19 +374,26 @@ Target_scaling resolved_target_scaling(const Untangling_input<d>& in, Target_sca
                                                                   : Target_scaling::AS_GIVEN;
 }
 
+/// Targets whose mean ratio is below this are degenerate (replaced by regular ones).
+constexpr double default_degenerate_quality = 1e-4;
+
 // make_untangling_problem() runs element by element in parallel chunks;
 // every sum in it runs serially in element order over the values they leave,
 // so the problem (its scale, weights, hence the result) has the same bits for
 // any number of threads.
 
-/// P.x: the map centred on its bounding box, with a unit largest extent (P.center, P.scale).
+/// P.x: the map centred on the bounding box of its elements, with a unit
+/// largest extent (P.center, P.scale).
 template <int d>
 void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
 {
   using Vector = Eigen::Matrix<double, d, 1>;
   const std::size_t n = in.positions.size();
-  Vector lo = in.positions[0], hi = lo;
-  for(const auto& p : in.positions) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
+  // the bounding box of the vertices that elements use: a vertex in no
+  // element, however far, must not squeeze the mesh into a corner
+  Vector lo = in.positions[in.elements[0][0]], hi = lo;
+  for(const auto& e : in.elements)
+    for(std::size_t v : e) { lo = lo.cwiseMin(in.positions[v]); hi = hi.cwiseMax(in.positions[v]); }
   P.center = (lo + hi) / 2;
   P.scale = (hi - lo).maxCoeff() > 0 ? (hi - lo).maxCoeff() : 1.;
   P.x.resize(d * n);
@@ -357,7 +403,23 @@ void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
   });
 }
 
-/// The target of every element, in the units of the input's targets:
+/// 0, or, when the targets' coordinates are so large or so small that
+/// their volumes would overflow or underflow (beyond 2^96 or below 2^-96),
+/// the exponent of the power of two that oriented_targets() divides them by
+/// (exactly); target_scale_factor() multiplies it back.
+template <int d>
+int extreme_target_exponent(const Untangling_input<d>& in)
+{
+  double largest = 0;
+  for(const auto& t : in.targets)
+    for(const auto& p : t) largest = (std::max)(largest, p.cwiseAbs().maxCoeff());
+  int exponent = 0;
+  if(largest > 0 && std::isfinite(largest)) std::frexp(largest, &exponent);
+  return std::abs(exponent) > 96 ? exponent : 0;
+}
+
+/// The target of every element, in the units of the input's targets
+/// (divided by 2^extreme_target_exponent()):
 /// regular simplices where none is given (oriented as most of the map),
 /// degenerate ones (mean ratio below `degenerate_quality`) replaced by
 /// regular ones of the mean size that keep the rest element's orientation,
@@ -375,9 +437,12 @@ oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untan
   std::vector<char> degenerate(m, 0);
   volume.resize(m);
   const bool map_is_negative = in.targets.empty() && map_volume_sign<d>(in) < 0;
+  const int exponent = extreme_target_exponent(in);
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
       targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
+      if(exponent != 0)
+        for(auto& p : targets[k]) p = p.unaryExpr([exponent](double c) { return std::ldexp(c, -exponent); });
       if(map_is_negative) std::swap(targets[k][0], targets[k][1]);
       volume[k] = simplex_volume<d>(targets[k]);
       degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
@@ -394,7 +459,7 @@ oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untan
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
       if(degenerate[k]) {
-        const double vol = in.targets.empty() ? 1. : simplex_volume<d>(in.targets[k]);
+        const double vol = in.targets.empty() ? 1. : volume[k];   // the given target's
         targets[k] = regular_simplex<d>();
         for(auto& p : targets[k]) p *= regular_size;
         if(vol < 0 || (vol == 0 && majority < 0)) std::swap(targets[k][0], targets[k][1]);
@@ -414,7 +479,7 @@ double target_scale_factor(const Untangling_input<d>& in, const Untangling_probl
                            const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets,
                            Target_scaling scaling, std::vector<double>& scratch)
 {
-  if(scaling != Target_scaling::MATCH_MAP_VOLUME) return 1. / P.scale;
+  if(scaling != Target_scaling::MATCH_MAP_VOLUME) return std::ldexp(1. / P.scale, extreme_target_exponent(in));
   const std::size_t mesh_m = in.number_of_mesh_elements();
   std::vector<double>& image_volume = scratch;
   image_volume.resize(std::max(image_volume.size(), mesh_m));
@@ -483,11 +548,25 @@ void add_elements(const Untangling_input<d>& in,
   for(double& w : P.weights) w /= weight_sum;
 }
 
+/// Vertices that no element uses are not unknowns: no energy term moves
+/// them, and as unknowns they would only enter the solvers' linear algebra
+/// (an empty row of the Hessian, their coordinates in the step norms).
+/// They are held where they are (P.is_fixed 2: fixed, but not by the caller).
+template <int d>
+void hold_vertices_in_no_element(const Untangling_input<d>& in, Untangling_problem<d>& P)
+{
+  std::vector<char> used(P.number_of_vertices, 0);
+  for(const auto& e : in.elements)
+    for(std::size_t v : e) used[v] = 1;
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(!used[v] && !P.is_fixed[v]) P.is_fixed[v] = 2;
+}
+
 /// Builds the normalized problem of `in`, which must be valid (validate_input()).
 template <int d>
 Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
                                               Target_scaling scaling = Target_scaling::AUTOMATIC,
-                                              double degenerate_quality = 1e-4)
+                                              double degenerate_quality = default_degenerate_quality)
 {
   const std::size_t n = in.positions.size();
   Untangling_problem<d> P;
@@ -496,6 +575,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   for(std::size_t v = 0; v < in.is_fixed.size(); ++v)
     P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
   P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
+  hold_vertices_in_no_element(in, P);
   normalize_map(in, P);
   {
     std::vector<double> scratch;

@@ -135,11 +135,11 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     // invertible too, which the exact check tells; only when it does not are
     // phantoms built on the last valid map.
     last = run_step(valid, motion, seconds, steps_left(), !build_phantoms);
-    if(build_phantoms && last.status != Untangling_status::SUCCESS && !stop_requested && steps_left() > 0 &&
+    if(build_phantoms && !reached_goal(last.status) && !stop_requested && steps_left() > 0 &&
        options.max_seconds - elapsed() > 0)
       last = run_step(valid, motion, options.max_seconds - elapsed(), steps_left(), true);
     if(last.status == Untangling_status::INVALID_INPUT) return last;
-    if(last.status == Untangling_status::SUCCESS) {
+    if(reached_goal(last.status)) {
       valid = map;
       reached = motion;
       ++steps;
@@ -157,7 +157,7 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
   // valid map (after a stop or with no eps step left, the map is only checked).
   if(reached < 1) {
     last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()), stop_requested ? 0 : steps_left(), true);
-    if(stop_requested && last.status != Untangling_status::SUCCESS) last.status = Untangling_status::STOPPED_BY_CALLBACK;
+    if(stop_requested && !reached_goal(last.status)) last.status = Untangling_status::STOPPED_BY_CALLBACK;
   }
   in.positions = map;
   if(phantoms_used) *phantoms_used = used;

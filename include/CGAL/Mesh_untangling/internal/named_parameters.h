@@ -16,7 +16,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cmath>
 #include <functional>
+#include <string>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -50,6 +52,11 @@ Untangling_options read_options(const NamedParameters& np)
                                     Continuation::AUTOMATIC);
   o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
                                           Mesh_untangling::default_continuation_steps);
+  if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())
+    if(!(o.theta >= 0 && o.theta <= 1))
+      o.invalid_parameter = "theta must be in [0, 1], not " + std::to_string(o.theta);
+  if(std::isnan(o.max_seconds) || o.max_seconds < 0)
+    o.invalid_parameter = "maximum_running_time must be a number of seconds >= 0, not " + std::to_string(o.max_seconds);
   return o;
 }
 

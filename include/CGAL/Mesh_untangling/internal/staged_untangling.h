@@ -86,7 +86,7 @@ Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, 
     const std::vector<double> start = P.x;
     if(loop.published_trial(P, outcome, [&] {
          hand_back_free_vertices(P, in);
-         return check_mesh<d>(in, P.reference_orientation, is_fixed).is_locally_invertible();
+         return check_mesh<d>(in, P.reference_orientation, is_fixed).has_no_repairable_defect();
        }))
       return outcome;
     P.x = start;
@@ -201,6 +201,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   record_verdict(report, result);
   result.seconds = loop.seconds();
   result.status = final_status(report, outcome.numerical_failure, outcome.stopped, loop.out_of_time());
+  if(result.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT) result.message = unrepairable_defects_message(report);
   return result;
 }
 

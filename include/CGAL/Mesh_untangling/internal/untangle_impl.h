@@ -13,6 +13,7 @@
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
 #include <optional>
+#include <string>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -59,7 +60,7 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   Phantom_elements<d> direct_phantoms;
   Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);
   const bool out_of_budget = !(first.seconds < options.max_seconds) || first.outer_iterations >= options.max_outer_iterations;
-  if(first.status == Untangling_status::SUCCESS || first.status == Untangling_status::INVALID_INPUT ||
+  if(reached_goal(first.status) || first.status == Untangling_status::INVALID_INPUT ||
      first.status == Untangling_status::STOPPED_BY_CALLBACK || out_of_budget) {
     if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
     return first;
@@ -99,15 +100,16 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
   const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
   const Invertibility_report input = check_mesh<d>(in, P.reference_orientation, is_fixed);
   Untangling_result kept = r;
-  kept.inverted_after = input.inverted_elements;
-  kept.overwound_vertices_after = input.overwound_interior_vertices + input.overwound_boundary_vertices;
-  kept.overwound_edges_after = input.overwound_interior_edges + input.overwound_boundary_edges;
+  record_verdict(input, kept);
   if(!has_fewer_defects(kept, r)) {
     in.positions.swap(given);
     return;
   }
   kept.input_returned = true;
-  if(input.is_locally_invertible()) kept.status = Untangling_status::SUCCESS;
+  if(input.has_no_repairable_defect()) {
+    kept.status = final_status(input, false, false, false);
+    kept.message = kept.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(input) : "";
+  }
   else if(r.status == Untangling_status::INVERTED_ELEMENTS_LEFT || r.status == Untangling_status::COVERINGS_LEFT)
     kept.status = kept.inverted_after > 0 ? Untangling_status::INVERTED_ELEMENTS_LEFT : Untangling_status::COVERINGS_LEFT;
   kept.min_scaled_det_after = determinant_summary(P, P.x.data()).min_det;
@@ -116,6 +118,46 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
   kept.final_energy = energy<d>(P, P.x.data(), r.final_epsilon, theta);
   r = kept;
   if(phantoms_used) *phantoms_used = Phantom_elements<d>();   // they belonged to the result
+}
+
+/// Rejects a mesh whose stars the verdict could not decide: duplicated
+/// elements, facets of more than two elements, vertex stars (and 3D edge
+/// fans) that are not disks or half-disks under the targets' orientations;
+/// and targets that are all degenerate (a rest that gives no shape).
+/// Throws std::invalid_argument naming the elements or vertex.
+template <int d>
+void validate_stars(const Untangling_input<d>& in)
+{
+  validate_manifold_facets<d>(in);
+  Untangling_problem<d> orientation;
+  std::vector<double> scratch;
+  oriented_targets<d>(in, default_degenerate_quality, orientation, scratch);
+  if(!in.targets.empty() && orientation.degenerate_targets_replaced == in.number_of_mesh_elements())
+    throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
+                                "untangle toward");
+  std::vector<bool> is_fixed(in.is_fixed.begin(), in.is_fixed.end());
+  is_fixed.resize(in.number_of_mesh_vertices(), false);
+  const Invertibility_report report = check_mesh<d>(in, orientation.reference_orientation, is_fixed);
+  if(!report.non_manifold_vertex_ids.empty())
+    throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
+                                " is not a disk or a half-disk (its elements meet there only at the vertex, or "
+                                "their targets disagree in orientation): local invertibility is not defined there");
+  if(!report.non_manifold_edges.empty())
+    throw std::invalid_argument("the tetrahedra around edge (" + std::to_string(report.non_manifold_edges.front()[0]) +
+                                ", " + std::to_string(report.non_manifold_edges.front()[1]) +
+                                ") do not form a disk or a half-disk: local invertibility is not defined there");
+}
+
+/// What a run that did not succeed left, in words.
+inline std::string what_is_left(const Untangling_result& r)
+{
+  std::string text = to_string(r.status) + " (" + std::to_string(r.inverted_after) + " inverted elements, " +
+                     std::to_string(r.overwound_vertices_after) + " over-wound vertices";
+  if(r.overwound_edges_after > 0) text += ", " + std::to_string(r.overwound_edges_after) + " over-wound edges";
+  if(r.input_defects + r.input_defect_stars > 0)
+    text += "; " + std::to_string(r.input_defects) + " inverted elements and " + std::to_string(r.input_defect_stars) +
+            " over-wound stars have only fixed vertices";
+  return text + ")";
 }
 
 /// Untangles `in.positions` in place (free vertices only), as
@@ -131,7 +173,9 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
                            Phantom_elements<d>* phantoms_used = nullptr)
 {
   try {
+    if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
+    validate_stars<d>(in);
   } catch(const std::invalid_argument& e) {
     Untangling_result invalid;
     invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
@@ -142,8 +186,9 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
   Untangling_result r = untangle_as_asked<d>(in, options, protection, phantoms_used);
-  if(r.status != Untangling_status::SUCCESS && r.status != Untangling_status::INVALID_INPUT)
+  if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
+  if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);
   return r;
 }
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 #include <cmath>
 #include <vector>
 
@@ -92,7 +93,43 @@ inline void record_verdict(const Invertibility_report& report, Untangling_result
   r.inverted_after = report.inverted_elements;
   r.overwound_vertices_after = report.overwound_interior_vertices + report.overwound_boundary_vertices;
   r.overwound_edges_after = report.overwound_interior_edges + report.overwound_boundary_edges;
-  r.input_defects = report.input_defects;
+  r.input_defects = report.input_defect_element_ids.size();
+  r.input_defect_stars = report.input_defect_vertex_ids.size() + report.input_defect_edges.size();
+}
+
+/// Whether a run reached what it can reach: every defect a free vertex can
+/// repair is gone (SUCCESS, or UNREPAIRABLE_DEFECTS_LEFT when fixed vertices
+/// alone hold some).
+inline bool reached_goal(Untangling_status status)
+{
+  return status == Untangling_status::SUCCESS || status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT;
+}
+
+/// What UNREPAIRABLE_DEFECTS_LEFT means on `report`: which elements (and
+/// stars) are defective with fixed vertices only, the first ten of each.
+inline std::string unrepairable_defects_message(const Invertibility_report& report)
+{
+  const auto list = [](const auto& ids, auto name) {
+    std::string text;
+    for(std::size_t i = 0; i < ids.size() && i < 10; ++i) text += (i ? ", " : "") + name(ids[i]);
+    if(ids.size() > 10) text += ", ...";
+    return text;
+  };
+  const auto number = [](std::size_t v) { return std::to_string(v); };
+  const auto edge = [](const std::array<std::size_t, 2>& e) {
+    return "(" + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ")";
+  };
+  std::string text;
+  if(!report.input_defect_element_ids.empty())
+    text = std::to_string(report.input_defect_element_ids.size()) + " inverted elements have only fixed vertices (" +
+           list(report.input_defect_element_ids, number) + ")";
+  if(!report.input_defect_vertex_ids.empty())
+    text += (text.empty() ? "" : "; ") + std::to_string(report.input_defect_vertex_ids.size()) +
+            " over-wound vertex stars have only such elements (vertices " + list(report.input_defect_vertex_ids, number) + ")";
+  if(!report.input_defect_edges.empty())
+    text += (text.empty() ? "" : "; ") + std::to_string(report.input_defect_edges.size()) +
+            " over-wound edge fans have only such elements (edges " + list(report.input_defect_edges, edge) + ")";
+  return text + ": no free vertex can repair them";
 }
 
 /// How a run ended: SUCCESS exactly when the exact checks find the map
@@ -101,6 +138,7 @@ inline Untangling_status final_status(const Invertibility_report& report, bool n
                                       bool out_of_time)
 {
   if(report.is_locally_invertible()) return Untangling_status::SUCCESS;
+  if(report.has_no_repairable_defect()) return Untangling_status::UNREPAIRABLE_DEFECTS_LEFT;
   if(numerical_failure) return Untangling_status::NUMERICAL_FAILURE;
   if(stopped && out_of_time) return Untangling_status::TIME_LIMIT_REACHED;
   if(stopped) return Untangling_status::STOPPED_BY_CALLBACK;

@@ -67,6 +67,28 @@ inline double determinant(const Vec3& a, const Vec3& b, const Vec3& c)
          a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
+/// `positions` scaled by the power of two that brings the largest
+/// coordinate of the elements' vertices into [1/2, 1).  The scaling is
+/// exact, so the angles measured on the result are those of the map at any
+/// scale, where the raw coordinates overflow in the products of the angle
+/// formulas (beyond about 1e154) or underflow (below about 1e-154).
+template <std::size_t D, std::size_t N>
+std::vector<std::array<double, D>> scaled_for_angles(const std::vector<std::array<double, D>>& positions,
+                                                     const std::vector<std::array<std::size_t, N>>& simplices)
+{
+  double largest = 0;
+  for(const auto& s : simplices)
+    for(std::size_t v : s)
+      for(double c : positions[v]) largest = (std::max)(largest, std::abs(c));
+  std::vector<std::array<double, D>> scaled = positions;
+  if(!(largest > 0) || !std::isfinite(largest)) return scaled;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  for(auto& p : scaled)
+    for(double& c : p) c = std::ldexp(c, -exponent);
+  return scaled;
+}
+
 /// Unsigned angle at `v` of the triangle (v, a, b), in [0, π].
 inline double corner_angle(const Vec2& v, const Vec2& a, const Vec2& b)
 {

@@ -81,6 +81,18 @@ public:
     report_.overwound_vertex_ids.push_back(v);
   }
 
+  void non_manifold_vertex(std::size_t v)
+  {
+    ++report_.non_manifold;
+    report_.non_manifold_vertex_ids.push_back(v);
+  }
+
+  void non_manifold_edge(std::size_t a, std::size_t b)
+  {
+    ++report_.non_manifold;
+    report_.non_manifold_edges.push_back({a, b});
+  }
+
   template <class Elements>
   void edge(std::size_t a, std::size_t b, Star_type type, const Elements& fan)
   {
@@ -136,6 +148,8 @@ inline void add_part(Invertibility_report& report, const Invertibility_report& p
   append(report.input_defect_element_ids, part.input_defect_element_ids);
   append(report.input_defect_vertex_ids, part.input_defect_vertex_ids);
   append(report.input_defect_edges, part.input_defect_edges);
+  append(report.non_manifold_vertex_ids, part.non_manifold_vertex_ids);
+  append(report.non_manifold_edges, part.non_manifold_edges);
   report.min_covering = (std::min)(report.min_covering, part.min_covering);
   report.max_covering = (std::max)(report.max_covering, part.max_covering);
   report.max_boundary_covering = (std::max)(report.max_boundary_covering, part.max_boundary_covering);

@@ -71,7 +71,7 @@ struct Phantom_options
   /// to leave room for its closing triangle
   double min_closing_angle = phantom_pi / 12;
   /// targets below this mean ratio are degenerate (as in make_untangling_problem())
-  double degenerate_quality = 1e-4;
+  double degenerate_quality = default_degenerate_quality;
 };
 
 struct Phantom_statistics

@@ -50,7 +50,7 @@ public:
   Star_builder(std::size_t number_of_vertices,
                const std::vector<std::array<std::size_t, 3>>& triangles,
                const std::vector<std::array<Eigen::Vector2d, 3>>& targets,
-               double degenerate_quality = 1e-4)
+               double degenerate_quality = default_degenerate_quality)
     : triangles_(triangles), targets_(targets)
   {
     const std::size_t m = triangles.size();
