@@ -168,16 +168,18 @@ static void test_stars_2()
 
   // The same over-wound fan with all vertices fixed is an input defect.
   star_2(8, 60., false, points, triangles);
+  // Nothing can repair it, and the map is not locally invertible for that.
   r = MU::check_local_invertibility(points, triangles, {}, std::vector<bool>(points.size(), true));
-  CHECK(r.is_locally_invertible());
+  CHECK(!r.is_locally_invertible() && r.has_no_repairable_defect());
   CHECK(r.input_defects == 1 && r.input_defect_vertex_ids == std::vector<std::size_t>{0});
 
-  // Three triangles on one edge: stars of its ends are skipped, not failed.
+  // Three triangles on one edge: the stars of its ends are not checked, and
+  // the map is not called locally invertible.
   points = {{0, 0}, {1, 0}, {0.5, 1}, {0.5, -1}, {0.5, 2}};
   triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
   r = MU::check_local_invertibility(points, triangles, {}, {});
-  CHECK(r.non_manifold == 2);
-  CHECK(r.is_locally_invertible());
+  CHECK(r.non_manifold == 2 && r.non_manifold_vertex_ids == std::vector<std::size_t>({0, 1}));
+  CHECK(!r.is_locally_invertible() && r.has_no_repairable_defect());
 }
 
 // ---------------------------------------------------------------- 3D
@@ -304,7 +306,7 @@ static void test_coverings_3()
 
   // All fixed: the same fan is an input defect.
   r = MU::check_local_invertibility(points, tets, {}, std::vector<bool>(points.size(), true));
-  CHECK(r.is_locally_invertible());
+  CHECK(!r.is_locally_invertible() && r.has_no_repairable_defect());
   CHECK(r.input_defects == 1 && r.input_defect_edges == std::vector<Edge>{{0, 1}});
   // One free ring vertex makes it the untangler's business again.
   std::vector<bool> fixed(points.size(), true);
@@ -337,7 +339,7 @@ static void test_input_defects_3()
   auto r = MU::check_local_invertibility(points, tets, {}, std::vector<bool>(4, true));
   CHECK(r.inverted_elements == 0 && r.inverted_element_ids.empty());
   CHECK(r.input_defects == 1 && r.input_defect_element_ids == std::vector<std::size_t>{0});
-  CHECK(r.is_locally_invertible());
+  CHECK(!r.is_locally_invertible() && r.has_no_repairable_defect());
 
   r = MU::check_local_invertibility(points, tets, {}, {true, true, true, false});
   CHECK(r.inverted_elements == 1 && r.input_defects == 0);
