@@ -234,6 +234,12 @@ void test_outputs_commit_together()
   }
   CHECK(read_text(a).find("# vtk DataFile") == 0 && read_text(b) == "new b" && read_text(c) == triangle_off);
   CHECK(temporaries_left() == 0);
+  // One file reached twice (a dangling link to a new name, and that name) is refused.
+  fs::create_symlink("twice.off", temp_dir / "twice-link.off");
+  Output_files twice;
+  twice.add(temp_path("twice.off"));
+  CHECK_WRITE_ERROR(twice.add(temp_path("twice-link.off")), "twice-link.off: the same file as the output ");
+  CHECK_WRITE_ERROR(twice.add(temp_path("./twice.off")), "the same file as the output ");
 }
 
 // In a child: temporaries of both kinds are being written when `signal_number`

@@ -56,6 +56,9 @@ public:
   std::string add(const std::string& target)
   {
     const std::string destination = resolve_output_target(target);
+    for(const Entry& e : entries_)
+      if(same_path(e.destination, destination))
+        throw Write_error(target, "the same file as the output " + e.target);
     check_directory_writable(destination);
     const std::string extension = std::filesystem::path(destination).extension().string();
     const std::string temporary = temporary_name(destination, extension);
@@ -90,6 +93,16 @@ private:
     std::string temporary;
     int slot;
   };
+
+  // Two outputs through different links (or "a" and "./a") must not race
+  // for one file: the last rename would silently win.
+  static bool same_path(const std::string& a, const std::string& b)
+  {
+    std::error_code ec;
+    const std::filesystem::path x = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ec), ec);
+    const std::filesystem::path y = std::filesystem::weakly_canonical(std::filesystem::absolute(b, ec), ec);
+    return x == y;
+  }
 
   std::string renamed_before(std::size_t failed) const
   {
