@@ -242,7 +242,9 @@ inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
     std::array<double, 3> p;
     for(int c = 0; c < 3; ++c) {
       Token t = next_VTK_value(file, "POINTS", i, count, "points");
-      p[c] = to_double(file, t, std::string(axis[c]) + " coordinate of point " + std::to_string(i));
+      // (the message is built only on failure: this runs once per number)
+      if(parse_double(t.text, p[c]) != Number_status::OK)
+        to_double(file, t, std::string(axis[c]) + " coordinate of point " + std::to_string(i));   // throws
     }
     mesh.map.push_back(p);
   }
