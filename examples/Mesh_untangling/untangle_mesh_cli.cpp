@@ -12,6 +12,8 @@
 
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/Output_files.h>
+#include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
@@ -79,7 +81,8 @@ bool same_file(const std::string& a, const std::string& b)
 }
 
 /// Every file read must survive the run, and no two outputs may collide;
-/// checked before untangling, so that a bad path costs no time and writes nothing.
+/// checked before untangling, so that a bad path costs no time and writes
+/// nothing (reserve_outputs() then checks that each can be written).
 void check_output_paths(const Arguments& args)
 {
   const std::string ext = lowercase_extension(args.output);
@@ -97,12 +100,6 @@ void check_output_paths(const Arguments& args)
     for(const auto& in : inputs)
       if(!in.second->empty() && same_file(*in.second, output))
         throw Usage_error(output + ": refusing to overwrite " + in.first);
-    std::error_code ec;
-    const fs::path dir = fs::path(output).parent_path();
-    if(!dir.empty() && !fs::is_directory(dir, ec))
-      throw Usage_error(output + ": directory '" + dir.string() + "' does not exist");
-    if(fs::is_directory(output, ec))
-      throw Usage_error(output + ": is a directory");
     for(std::size_t j = 0; j < i; ++j)
       if(!outputs[j].second->empty() && same_file(*outputs[j].second, output))
         throw Usage_error(output + ": " + outputs[j].first + " and " + outputs[i].first + " would be the same file");
@@ -120,6 +117,35 @@ void check_pictures(const Arguments& args, const Mesh_file& mesh)
     if(!path->empty() && mesh.simplex_size != 3)
       throw Usage_error(*path + ": SVG pictures are drawn for 2D maps (triangles) only; " + args.input +
                         " holds tetrahedra (write .vtk and open it in ParaView)");
+}
+
+/// Element `i` as its file numbers it (OBJ and MEDIT count from 1), with
+/// its vertices, and the file's line when known.
+std::string element_in_file(const std::string& path, const Mesh_file& mesh, std::size_t i)
+{
+  const std::string ext = lowercase_extension(path);
+  const std::size_t base = ext == ".obj" || ext == ".mesh" ? 1 : 0;
+  const bool known_line = i < mesh.simplex_lines.size();
+  std::string text = (known_line ? path + ":" + std::to_string(mesh.simplex_lines[i]) : path) + ": "
+                     + (mesh.simplex_size == 4 ? "tetrahedron " : "triangle ") + std::to_string(i + base) + " (";
+  for(int c = 0; c < mesh.simplex_size; ++c)
+    text += (c == 0 ? "" : " ") + std::to_string(mesh.simplices[i][c] + base);
+  return text + ")";
+}
+
+/// Says where a rest's elements first differ from the input's.
+std::string first_element_difference(const Arguments& args, const Mesh_file& rest, const Mesh_file& mesh)
+{
+  const std::size_t common = (std::min)(rest.simplices.size(), mesh.simplices.size());
+  std::size_t i = 0;
+  while(i < common && rest.simplices[i] == mesh.simplices[i]) ++i;
+  if(i == common || rest.simplex_size != mesh.simplex_size)
+    return args.rest + ": " + std::to_string(rest.simplices.size()) + " elements (" +
+           (rest.simplex_size == 4 ? "tetrahedra" : "triangles") + "), but " + args.input + " has " +
+           std::to_string(mesh.simplices.size()) + " (" + (mesh.simplex_size == 4 ? "tetrahedra" : "triangles") +
+           "): the rest must have the input's elements, in the same order";
+  return element_in_file(args.rest, rest, i) + " differs from " + element_in_file(args.input, mesh, i) +
+         ": the rest must have the input's elements, in the same order";
 }
 
 /// The map to untangle, with its rest geometry, as the file formats give it.
@@ -144,7 +170,7 @@ Mesh_file read_problem(const Arguments& args)
       throw Usage_error(args.rest + ": " + std::to_string(points.size()) + " vertices, but " + args.input + " has " +
                         std::to_string(mesh.map.size()));
     if(!rest.simplices.empty() && rest.simplices != mesh.simplices)
-      throw Usage_error(args.rest + ": its elements differ from those of " + args.input);
+      throw Usage_error(first_element_difference(args, rest, mesh));
     mesh.rest = points;
     mesh.rest_dimension = rest_in_map ? rest.map_dimension : rest.rest_dimension;
   }
@@ -234,7 +260,7 @@ struct Checks
   Boundary_verdict boundary_before, boundary_after;
 };
 
-void write_report(IO::internal::Atomic_output_file& file, const Arguments& args, const std::string& fixed_source,
+void write_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
                   const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v, const Checks& c,
                   std::size_t phantoms_not_positive)
 {
@@ -294,8 +320,7 @@ void write_report(IO::internal::Atomic_output_file& file, const Arguments& args,
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
   j["seconds"] = r.seconds;
-  file.stream() << j.dump(2) << "\n";
-  file.commit();
+  out << j.dump(2) << "\n";
 }
 
 Run_options run_options(const Arguments& args)
@@ -322,6 +347,47 @@ Run_options run_options(const Arguments& args)
   return options;
 }
 
+/// Where each output is written until all are committed together.
+struct Temporary_outputs
+{
+  std::string output, report, svg, svg_input, phantoms;
+};
+
+/// Checks every output before any work (regular file or new name, links
+/// followed, a file can be created beside it) and names its temporary.
+Temporary_outputs reserve_outputs(const Arguments& args, IO::internal::Output_files& files)
+{
+  Temporary_outputs t;
+  t.output = files.add(args.output);
+  const std::pair<const std::string*, std::string*> optional[] = {
+    {&args.report, &t.report}, {&args.svg, &t.svg}, {&args.svg_input, &t.svg_input}, {&args.phantoms, &t.phantoms}};
+  for(const auto& o : optional)
+    if(!o.first->empty()) *o.second = files.add(*o.first);
+  return t;
+}
+
+/// Runs `write` to the temporary of `target`; its errors name the target.
+template <class Write>
+void write_for(const std::string& target, Write write)
+{
+  try {
+    write();
+  } catch(const IO::Write_error& e) {
+    throw IO::Write_error(target, e.reason());
+  }
+}
+
+/// Writes a text output to `temporary` whole, or throws Write_error naming `target`.
+template <class Write>
+void write_text_file(const std::string& target, const std::string& temporary, Write write)
+{
+  write_for(target, [&] {
+    IO::internal::Atomic_output_file file(temporary);
+    write(file.stream());
+    file.commit();
+  });
+}
+
 /// What the outputs are made of besides the untangled mesh.
 struct Run
 {
@@ -333,8 +399,10 @@ struct Run
   Run_record record;
 };
 
-/// Writes every output and returns the verdict on the result as written.
-Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run)
+/// Writes every output to its temporary, commits them all together and
+/// returns the verdict on the result as written.
+Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, const Temporary_outputs& to,
+                      IO::internal::Output_files& files)
 {
   // Fields are measured on the coordinates as written: the writers print
   // the shortest text that reads back to the same doubles.
@@ -343,33 +411,32 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run)
   std::optional<Phantom_mesh> phantoms;
   if(!run.record.phantom_simplices.empty() || !args.phantoms.empty()) phantoms = phantom_mesh(mesh, run.record);
 
-  // The temporary files of the report and the pictures are opened first, and
-  // the phantoms written before the result: if one of them cannot be
-  // created, nothing is written at all.
-  std::optional<IO::internal::Atomic_output_file> report, svg, svg_input;
-  if(!args.report.empty()) report.emplace(args.report);
-  if(!args.svg.empty()) svg.emplace(args.svg);
-  if(!args.svg_input.empty()) svg_input.emplace(args.svg_input);
-  if(!args.phantoms.empty()) write_with_fields(args.phantoms, phantoms->mesh, phantoms->cells, phantoms->points);
-  write_with_fields(args.output, mesh, fields ? fields->cells : IO::VTK_fields(),
-                    fields ? fields->points : IO::VTK_fields());
-  const Mesh_file written = as_written(mesh, args.output);
+  // Every output goes to its temporary first; files.commit() then renames
+  // them all, so that a failure on any (a full disk) leaves every older
+  // file as it was.
+  if(!args.phantoms.empty())
+    write_for(args.phantoms, [&] { write_with_fields(to.phantoms, phantoms->mesh, phantoms->cells, phantoms->points); });
+  write_for(args.output, [&] {
+    write_with_fields(to.output, mesh, fields ? fields->cells : IO::VTK_fields(),
+                      fields ? fields->points : IO::VTK_fields());
+  });
+  const Mesh_file written = as_written(mesh, to.output);
   const Verdict verdict = fields && written.map == mesh.map ? fields->verdict : check_mesh_file(written, run.fixed);
   run.checks.boundary_after = check_boundary_of_mesh_file(written);
-  if(svg_input) {
-    write_svg(svg_input->stream(), *run.input_picture);
-    svg_input->commit();
-  }
-  if(svg) {
+  if(!args.svg_input.empty())
+    write_text_file(args.svg_input, to.svg_input, [&](std::ostream& out) { write_svg(out, *run.input_picture); });
+  if(!args.svg.empty()) {
     Svg_map picture = svg_map_of(written, run.fixed);
     add_phantom_overlay(picture, run.record);
     picture.title = args.output + " (result, as written)";
-    write_svg(svg->stream(), picture);
-    svg->commit();
+    write_text_file(args.svg, to.svg, [&](std::ostream& out) { write_svg(out, picture); });
   }
-  if(report)
-    write_report(*report, args, run.fixed_source, mesh, run.result, verdict, run.checks,
-                 phantoms ? phantoms->not_positive : 0);
+  if(!args.report.empty())
+    write_text_file(args.report, to.report, [&](std::ostream& out) {
+      write_report(out, args, run.fixed_source, mesh, run.result, verdict, run.checks,
+                   phantoms ? phantoms->not_positive : 0);
+    });
+  files.commit();
   return verdict;
 }
 
@@ -414,6 +481,8 @@ int run(const Arguments& args)
   check_output_format(args.output, mesh);
   check_pictures(args, mesh);
   check_phantoms_output(args, mesh);
+  IO::internal::Output_files files;
+  const Temporary_outputs temporaries = reserve_outputs(args, files);
 
   run.checks.before = check_mesh_file(mesh, run.fixed);
   run.checks.boundary_before = check_boundary_of_mesh_file(mesh);
@@ -422,7 +491,7 @@ int run(const Arguments& args)
     run.input_picture->title = args.input + " (input)";
   }
   run.result = untangle_mesh_file(mesh, run.fixed, run_options(args), &run.record);
-  const Verdict verdict = write_outputs(args, mesh, run);
+  const Verdict verdict = write_outputs(args, mesh, run, temporaries, files);
   print_summary(args, mesh, run, verdict);
   if(verdict.locally_invertible) return 0;
   return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
@@ -448,6 +517,16 @@ const CLI::Validator seconds_from_0(
   },
   "SECONDS >= 0");
 
+// CLI11's Range lets NaN through (every comparison with it is false).
+const CLI::Validator fraction_from_0_to_1(
+  [](std::string& text) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    const bool number = end != text.c_str() && *end == '\0' && !std::isnan(value);
+    return number && value >= 0 && value <= 1 ? std::string() : "must be a number from 0 to 1, not '" + text + "'";
+  },
+  "0 <= NUMBER <= 1");
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -469,7 +548,7 @@ int main(int argc, char** argv)
                  "would cost too much), newton, lbfgs (the published scheme); default auto")
     ->check(CLI::IsMember({"auto", "newton", "lbfgs"}));
   app.add_option("--theta", args.theta, "size/shape trade-off in [0, 1]; default 1/128 (2D), 1/2 (3D)")
-    ->check(CLI::Range(0., 1.));
+    ->check(fraction_from_0_to_1);
   app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(whole_number_from_1);
   app.add_option("--time-limit", args.time_limit, "seconds, checked after each eps step")->check(seconds_from_0);
   app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
@@ -502,6 +581,8 @@ int main(int argc, char** argv)
   }
   if(args.output.empty()) args.output = default_output(args.input);
   const Thread_limit thread_limit(args.threads);
+  // No *.tmp left beside the outputs when the run is interrupted.
+  IO::internal::remove_temporaries_on_interrupt();
   try {
     return run(args);
   } catch(const IO::Read_error& e) {

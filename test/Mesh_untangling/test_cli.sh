@@ -346,7 +346,7 @@ check "--svg: no red triangle in the result" [ "$(svg_count svg_out.svg '<polygo
 check "--svg: 288 triangles drawn" [ "$(svg_count svg_out.svg '<polygon class="triangle"')" = 288 ]
 check "--svg: no circled vertex in the result" [ "$(svg_count svg_out.svg '<circle class="overwound"')" = 0 ]
 check "--svg: title names the result" grep -q '>svg.input (result, as written)</text>' svg_out.svg
-check "--svg: no temporary file left" [ -z "$(ls | grep '\.tmp$')" ]
+check "--svg: no temporary file left" [ -z "$(ls | grep '\.tmp')" ]
 check "--svg: report overwound_vertices_before > 0" json_positive svg.json overwound_vertices_before
 check "--svg: report overwound_interior_vertices 0" json_is svg.json overwound_interior_vertices 0
 check "--svg: report overwound_boundary_vertices 0" json_is svg.json overwound_boundary_vertices 0

@@ -502,6 +502,82 @@ void test_medit_errors()
                    5, "truncated");
 }
 
+// Every description the MEDIT reader builds only on failure still names the value.
+void test_medit_value_messages()
+{
+  const std::string head =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"; // 8
+  CHECK_READ_ERROR(read_medit, "index-word.mesh", head + "Triangles\n2\n1 2 3 0\n1 -2 3 0\n", 12,
+                   "vertex index of triangle 2 is not a non-negative integer: '-2'");
+  CHECK_READ_ERROR(read_medit, "vertex-ref.mesh", "MeshVersionFormatted 2\nDimension 2\nVertices\n2\n0 0 0\n1 0 0.5\n",
+                   6, "reference of vertex 2 is not an integer: '0.5'");
+  CHECK_READ_ERROR(read_medit, "tet-ref.mesh", head + "Tetrahedra\n1\n1 2 3 4 x\n", 11,
+                   "truncated: the Tetrahedra block ends after 0 of 1 entries (found 'x')");
+  CHECK_READ_ERROR(read_medit, "tet-ref2.mesh", head + "Tetrahedra\n1\n1 2 3 4 1e3\n", 11,
+                   "reference of tetrahedron 1 is not an integer: '1e3'");
+  CHECK_READ_ERROR(read_medit, "corner.mesh", head + "Corners\n2\n1\n1e999\n", 12,
+                   "value in Corners is not finite");
+  CHECK_READ_ERROR(read_medit, "y.mesh", head + "Vertices\n", 9, "second Vertices block");
+  CHECK_READ_ERROR(read_medit, "y2.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0..1 0 0\n", 5,
+                   "y coordinate of vertex 1 is not a number: '0..1'");
+}
+
+// Issue 27's smaller items: bits kept through MEDIT, an empty fixed list in
+// a VTK file of no point, an empty OBJ file, and long lines counted.
+void test_format_details()
+{
+  // A planar mesh with a z of -0.0 is written in 3D and reads back to the same bits.
+  Mesh_file planar = triangle_mesh(0, 2);
+  planar.map[3][2] = -0.0;
+  const std::string path = temp_path("negative-zero.mesh");
+  IO::write_MEDIT(path, planar);
+  CHECK(read_text(path).find("Dimension 3") != std::string::npos);
+  Mesh_file back = IO::read_MEDIT(path);
+  CHECK(same_points(back.map, planar.map) && std::signbit(back.map[3][2]));
+  // read, write, read of a file with a -0 z: the same bits
+  const std::string given = write_text("given-zero.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n"
+                                                          "0 0 0 0\n1 0 -0 0\n0 1 0 0\nTriangles\n1\n1 2 3 0\nEnd\n");
+  const Mesh_file first = IO::read_MEDIT(given);
+  IO::write_MEDIT(temp_path("given-zero-again.mesh"), first);
+  const Mesh_file second = IO::read_MEDIT(temp_path("given-zero-again.mesh"));
+  CHECK(std::signbit(first.map[1][2]) && same_mesh(first, second));
+  // A plain planar mesh stays 2D.
+  IO::write_MEDIT(temp_path("planar.mesh"), triangle_mesh(0, 2));
+  CHECK(read_text(temp_path("planar.mesh")).find("Dimension 2") != std::string::npos);
+
+  // No point, and the (empty) list of fixed vertices: it reads back as written.
+  Mesh_file nothing;
+  nothing.map_dimension = 3;
+  nothing.has_fixed = true;
+  IO::write_VTK(temp_path("nothing.vtk"), nothing);
+  const Mesh_file nothing_back = IO::read_VTK(temp_path("nothing.vtk"));
+  CHECK(nothing_back.has_fixed && nothing_back.fixed.empty() && nothing_back.map.empty());
+  nothing.has_fixed = false;
+  IO::write_VTK(temp_path("nothing-free.vtk"), nothing);
+  CHECK(!IO::read_VTK(temp_path("nothing-free.vtk")).has_fixed);
+
+  // An empty OBJ file is rejected like every other empty file.
+  CHECK_READ_ERROR(read_obj, "empty.obj", "", 1, "truncated: no OBJ statement");
+  CHECK_READ_ERROR(read_obj, "comments.obj", "# nothing\n\n# here\n", 3, "truncated: no OBJ statement");
+
+  // A long line is counted, not stored: the message gives its length.
+  std::string long_line;
+  for(int i = 0; i < 1000; ++i)
+    long_line += "0 ";
+  CHECK_READ_ERROR(read_off, "long.off", "OFF\n3 1 0\n" + long_line + "\n", 3,
+                   "vertex 0: expected 3 coordinates, got 1000");
+  CHECK_READ_ERROR(read_off, "long-header.off", "OFF " + long_line + "\n", 1,
+                   "expected the counts line 'vertices faces [edges]', got 1000 tokens");
+  CHECK_READ_ERROR(read_obj, "long.obj", "v " + long_line + "\n", 1, "vertex 1: expected 'v x y z', got 1000 numbers");
+  CHECK_READ_ERROR(read_obj, "long-face.obj", "v 0 0 0\nf " + long_line + "\n", 2, "face with 1000 vertices");
+  CHECK_READ_ERROR(read_input, "long.input", "3 2\n" + long_line + "\n", 2, "rest vertex 0: expected 2 coordinates, got 1000");
+  CHECK_READ_ERROR(read_input, "long-header.input", long_line + "\n", 1,
+                   "expected the rest block header 'nV dimRest', got 1000 tokens");
+  // Elements keep their line, for messages that compare two files.
+  const Mesh_file lines = IO::read_OFF(write_text("lines.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n\n# c\n3 0 2 1\n"));
+  CHECK((lines.simplex_lines == std::vector<std::size_t>{6, 9}));
+}
+
 void test_obj_errors()
 {
   const std::string head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 5 5\n"; // 9 lines
@@ -620,8 +696,9 @@ void test_writer_errors()
   CHECK_WRITE_ERROR(IO::write_VTK(missing_dir, tets), "cannot create temporary file");
   CHECK(!fs::exists(temp_dir / "no-such-dir"));
 
-  // A failing rename (the target is a directory) must not leave the temporary.
-  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("dir.off"), triangle_mesh(0, 3)), "cannot rename");
+  // A directory is never replaced, nor is a temporary left beside it.
+  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("dir.off"), triangle_mesh(0, 3)),
+                    "dir.off: is a directory, not a regular file: refusing to replace it");
 
   // A rejected mesh leaves an existing target untouched.
   const std::string target = temp_path("kept.vtk");
@@ -790,6 +867,8 @@ int main(int argc, char** argv)
   test_vtk_fixed_flags();
   test_medit_errors();
   test_obj_errors();
+  test_medit_value_messages();
+  test_format_details();
   test_handles_and_common_errors();
   test_writer_errors();
   test_vtk_fields();

@@ -15,6 +15,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -47,16 +48,55 @@ struct MEDIT_content
 // its count announced: say so instead of "not a number".
 inline Token next_MEDIT_value(Text_file& file, const Token& keyword, std::size_t done, std::size_t count)
 {
+  // The message is built only on failure: this runs once per number of the file.
+  auto status = [&] {
+    return "the " + std::string(keyword.text) + " block ends after " + std::to_string(done) + " of "
+           + std::to_string(count) + " entries";
+  };
   Token token;
-  const std::string status = "the " + std::string(keyword.text) + " block ends after " + std::to_string(done)
-                             + " of " + std::to_string(count) + " entries";
   if(!file.next_token(token))
-    file.fail_truncated(status);
+    file.fail_truncated(status());
   double ignored;
   if(std::isalpha(static_cast<unsigned char>(token.text[0]))
      && parse_double(token.text, ignored) == Number_status::NOT_A_NUMBER)
-    file.fail(token.line, "truncated: " + status + " (found " + quote_token(token.text) + ")");
+    file.fail(token.line, "truncated: " + status() + " (found " + quote_token(token.text) + ")");
   return token;
+}
+
+// A number of a MEDIT block; `describe` names it, called only on failure.
+template <class Describe>
+double next_MEDIT_double(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                         Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  double value = 0;
+  if(parse_double(token.text, value) != Number_status::OK)
+    to_double(file, token, describe());   // throws, naming the value
+  return value;
+}
+
+// A vertex index of a MEDIT element; `line` gets the line it is on.
+template <class Describe>
+std::size_t next_MEDIT_index(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                             std::size_t& line, Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  line = token.line;
+  std::size_t value = 0;
+  if(!parse_size(token.text, value))
+    to_size(file, token, describe());   // throws, naming the value
+  return value;
+}
+
+// References are read only to be checked.
+template <class Describe>
+void skip_MEDIT_reference(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                          Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  long long ignored = 0;
+  if(!parse_integer(token.text, ignored))
+    to_integer(file, token, describe());   // throws, naming the reference
 }
 
 inline std::size_t read_MEDIT_count(Text_file& file, const Token& keyword)
@@ -77,12 +117,12 @@ inline void read_MEDIT_vertices(Text_file& file, const Token& keyword, MEDIT_con
   content.vertices.reserve(file.sane_capacity(count));
   static const char* const axis[] = {"x", "y", "z"};
   for(std::size_t i = 0; i < count; ++i) {
-    const std::string what = "vertex " + std::to_string(i + 1);
+    const auto what = [i] { return "vertex " + std::to_string(i + 1); };
     std::array<double, 3> p = {0, 0, 0};
     for(int c = 0; c < content.dimension; ++c)
-      p[c] = to_double(file, next_MEDIT_value(file, keyword, i, count),
-                       std::string(axis[c]) + " coordinate of " + what);
-    to_integer(file, next_MEDIT_value(file, keyword, i, count), "reference of " + what);
+      p[c] = next_MEDIT_double(file, keyword, i, count,
+                               [&] { return std::string(axis[c]) + " coordinate of " + what(); });
+    skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
     content.vertices.push_back(p);
   }
 }
@@ -97,17 +137,16 @@ inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, ME
   block.ids.reserve(file.sane_capacity(count));
   block.lines.reserve(file.sane_capacity(count));
   for(std::size_t i = 0; i < count; ++i) {
-    const std::string what = std::string(simplex_name(k)) + " " + std::to_string(i + 1);
+    const auto what = [&] { return std::string(simplex_name(k)) + " " + std::to_string(i + 1); };
     std::array<std::size_t, 4> ids = {0, 0, 0, 0};
-    std::size_t line = 0;
+    std::size_t line = 0, first_line = 0;
     for(int c = 0; c < k; ++c) {
-      Token t = next_MEDIT_value(file, keyword, i, count);
-      line = (c == 0) ? t.line : line;
-      ids[c] = to_size(file, t, "vertex index of " + what);
+      ids[c] = next_MEDIT_index(file, keyword, i, count, line, [&] { return "vertex index of " + what(); });
+      first_line = c == 0 ? line : first_line;
     }
-    to_integer(file, next_MEDIT_value(file, keyword, i, count), "reference of " + what);
+    block.lines.push_back(first_line);
+    skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
     block.ids.push_back(ids);
-    block.lines.push_back(line);
   }
 }
 
@@ -117,7 +156,7 @@ inline std::size_t skip_MEDIT_block(Text_file& file, const Token& keyword, std::
   const std::size_t count = read_MEDIT_count(file, keyword);
   for(std::size_t i = 0; i < count; ++i)
     for(std::size_t j = 0; j < width; ++j)
-      to_double(file, next_MEDIT_value(file, keyword, i, count), "value in " + std::string(keyword.text));
+      next_MEDIT_double(file, keyword, i, count, [&] { return "value in " + std::string(keyword.text); });
   return count;
 }
 
@@ -229,6 +268,18 @@ inline void select_MEDIT_simplices(const Text_file& file, const MEDIT_content& c
                                     + ": " + defect);
     mesh.simplices.push_back(to_zero_based(block.ids[i], mesh.simplex_size, 1));
   }
+  mesh.simplex_lines = block.lines;
+}
+
+// A planar mesh read from a 3D file may have a z of -0.0, which a
+// Dimension 2 file would give back as +0.0: such a mesh is written in 3D,
+// so that reading what was written gives the same bits.
+inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points)
+{
+  for(const std::array<double, 3>& p : points)
+    if(p[2] == 0 && std::signbit(p[2]))
+      return true;
+  return false;
 }
 
 inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
@@ -253,13 +304,15 @@ inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
 /// \throws Read_error if the file is missing or malformed.
 inline Mesh_file read_MEDIT(const std::string& path)
 {
-  internal::Text_file file(path, '#');
-  internal::MEDIT_content content = internal::read_MEDIT_content(file);
-  Mesh_file mesh;
-  internal::select_MEDIT_simplices(file, content, mesh);
-  mesh.map = std::move(content.vertices);
-  mesh.map_dimension = content.dimension == 2 ? 2 : internal::dimension_of(mesh.map, mesh.simplex_size);
-  return mesh;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path, '#');
+    internal::MEDIT_content content = internal::read_MEDIT_content(file);
+    Mesh_file mesh;
+    internal::select_MEDIT_simplices(file, content, mesh);
+    mesh.map = std::move(content.vertices);
+    mesh.map_dimension = content.dimension == 2 ? 2 : internal::dimension_of(mesh.map, mesh.simplex_size);
+    return mesh;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO
@@ -270,7 +323,7 @@ inline void write_MEDIT(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
   internal::Single_geometry geometry = internal::single_geometry(mesh);
-  const int dimension = geometry.dimension == 0 ? 3 : geometry.dimension;
+  const int dimension = geometry.dimension == 2 && !internal::has_negative_zero_z(*geometry.points) ? 2 : 3;
   internal::Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "MeshVersionFormatted 2\n\nDimension " << dimension << "\n\n";

@@ -29,6 +29,9 @@ struct Mesh_file
   std::vector<std::array<double, 3>> map;             ///< positions (the possibly tangled map); z = 0 when 2D
   bool has_fixed = false;                             ///< the file lists fixed (handle) vertices
   std::vector<std::size_t> fixed;                     ///< their 0-based ids, sorted, without duplicates
+  /// The line of each simplex in the file read (1-based), for messages;
+  /// empty for a mesh not read from a file. Writers ignore it.
+  std::vector<std::size_t> simplex_lines;
 
   std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }
 };

@@ -85,7 +85,7 @@ inline void read_OBJ_face(const Text_file& file, const std::vector<Token>& token
 {
   const std::size_t line = tokens[0].line;
   if(tokens.size() != 4)
-    file.fail(line, "face with " + std::to_string(tokens.size() - 1) + " vertices; only triangles are supported");
+    file.fail(line, "face with " + std::to_string(file.tokens_on_line() - 1) + " vertices; only triangles are supported");
   OBJ_face face{{0, 0, 0, 0}, {0, 0, 0}, line};
   for(int c = 0; c < 3; ++c)
     read_OBJ_corner(file, tokens[c + 1], content, face, c);
@@ -97,7 +97,7 @@ inline void read_OBJ_vertex(const Text_file& file, const std::vector<Token>& tok
 {
   const std::string what = "vertex " + std::to_string(content.positions.size() + 1);
   if(tokens.size() < 4 || tokens.size() > 7)
-    file.fail(tokens[0].line, what + ": expected 'v x y z', got " + std::to_string(tokens.size() - 1) + " numbers");
+    file.fail(tokens[0].line, what + ": expected 'v x y z', got " + std::to_string(file.tokens_on_line() - 1) + " numbers");
   for(std::size_t t = 4; t < tokens.size(); ++t)
     to_double(file, tokens[t], "extra value of " + what);
   content.positions.push_back(to_point(file, tokens, 1, 3, what));
@@ -108,7 +108,7 @@ inline void read_OBJ_texture(const Text_file& file, const std::vector<Token>& to
 {
   const std::string what = "texture coordinate " + std::to_string(content.textures.size() + 1);
   if(tokens.size() != 3 && tokens.size() != 4)
-    file.fail(tokens[0].line, what + ": expected 'vt u v', got " + std::to_string(tokens.size() - 1) + " numbers");
+    file.fail(tokens[0].line, what + ": expected 'vt u v', got " + std::to_string(file.tokens_on_line() - 1) + " numbers");
   if(tokens.size() == 4)
     to_double(file, tokens[3], "w of " + what);
   content.textures.push_back(to_point(file, tokens, 1, 2, what));
@@ -127,7 +127,11 @@ inline OBJ_content read_OBJ_content(Text_file& file)
 {
   OBJ_content content;
   std::vector<Token> tokens;
-  while(file.next_line(tokens)) {
+  // Like every other format, an OBJ file must hold something: an empty one
+  // is more likely a failed export than a mesh without vertices.
+  if(!file.next_line(tokens))
+    file.fail_truncated("no OBJ statement");
+  do {
     const std::string_view keyword = tokens[0].text;
     if(keyword == "v")
       read_OBJ_vertex(file, tokens, content);
@@ -137,7 +141,7 @@ inline OBJ_content read_OBJ_content(Text_file& file)
       read_OBJ_face(file, tokens, content);
     else if(!is_ignored_OBJ_statement(keyword))
       file.fail(tokens[0].line, "unsupported OBJ statement " + quote_token(keyword));
-  }
+  } while(file.next_line(tokens));
   return content;
 }
 
@@ -145,12 +149,14 @@ inline void check_OBJ_faces(const Text_file& file, const OBJ_content& content, M
 {
   const std::size_t n = content.positions.size();
   mesh.simplices.reserve(content.faces.size());
+  mesh.simplex_lines.reserve(content.faces.size());
   for(std::size_t i = 0; i < content.faces.size(); ++i) {
     const OBJ_face& face = content.faces[i];
     std::string defect = simplex_defect(face.vertices, 3, n, 1);
     if(!defect.empty())
       file.fail(face.line, "face " + std::to_string(i + 1) + ": " + defect);
     mesh.simplices.push_back(to_zero_based(face.vertices, 3, 1));
+    mesh.simplex_lines.push_back(face.line);
   }
 }
 
@@ -205,15 +211,17 @@ inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mes
 /// faces, or has seams (one vertex with two different texture coordinates).
 inline Mesh_file read_OBJ(const std::string& path)
 {
-  internal::Text_file file(path, '#');
-  internal::OBJ_content content = internal::read_OBJ_content(file);
-  Mesh_file mesh;
-  mesh.simplex_size = 3;
-  internal::check_OBJ_faces(file, content, mesh);
-  internal::build_OBJ_map(file, content, mesh);
-  mesh.rest = std::move(content.positions);
-  mesh.rest_dimension = internal::dimension_of(mesh.rest, 3);
-  return mesh;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path, '#');
+    internal::OBJ_content content = internal::read_OBJ_content(file);
+    Mesh_file mesh;
+    mesh.simplex_size = 3;
+    internal::check_OBJ_faces(file, content, mesh);
+    internal::build_OBJ_map(file, content, mesh);
+    mesh.rest = std::move(content.positions);
+    mesh.rest_dimension = internal::dimension_of(mesh.rest, 3);
+    return mesh;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO

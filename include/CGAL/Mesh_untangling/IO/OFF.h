@@ -36,12 +36,16 @@ inline std::pair<std::size_t, std::size_t> read_OFF_header(Text_file& file)
       file.fail(tokens[0].line, "unsupported OFF variant " + quote_token(header) + " (only plain OFF is)");
     file.fail(tokens[0].line, "missing 'OFF' header, found " + quote_token(header));
   }
+  std::size_t count = file.tokens_on_line() - 1;   // after the header, on its line
   tokens.erase(tokens.begin());
-  if(tokens.empty() && !file.next_line(tokens))
-    file.fail_truncated("expected the counts line 'vertices faces [edges]'");
-  if(tokens.size() != 2 && tokens.size() != 3)
+  if(tokens.empty()) {
+    if(!file.next_line(tokens))
+      file.fail_truncated("expected the counts line 'vertices faces [edges]'");
+    count = file.tokens_on_line();
+  }
+  if(count != 2 && count != 3)
     file.fail(tokens[0].line, "expected the counts line 'vertices faces [edges]', got "
-                                  + std::to_string(tokens.size()) + " tokens");
+                                  + std::to_string(count) + " tokens");
   return {to_size(file, tokens[0], "vertex count"), to_size(file, tokens[1], "face count")};
 }
 
@@ -55,7 +59,7 @@ inline void read_OFF_vertices(Text_file& file, std::size_t count, Mesh_file& mes
                           + std::to_string(count) + " vertices");
     const std::string what = "vertex " + std::to_string(i);
     if(tokens.size() != 3)
-      file.fail(tokens[0].line, what + ": expected 3 coordinates, got " + std::to_string(tokens.size()));
+      file.fail(tokens[0].line, what + ": expected 3 coordinates, got " + std::to_string(file.tokens_on_line()));
     mesh.map.push_back(to_point(file, tokens, 0, 3, what));
   }
 }
@@ -94,6 +98,7 @@ inline void read_OFF_faces(Text_file& file, std::size_t count, Mesh_file& mesh)
       file.fail_truncated("the face block ends after " + std::to_string(i) + " of "
                           + std::to_string(count) + " faces");
     mesh.simplices.push_back(read_OFF_face(file, tokens, i, mesh.map.size()));
+    mesh.simplex_lines.push_back(tokens[0].line);
   }
   if(file.next_line(tokens))
     file.fail(tokens[0].line, "unexpected data after the last face: " + quote_token(tokens[0].text));
@@ -103,17 +108,20 @@ inline void read_OFF_faces(Text_file& file, std::size_t count, Mesh_file& mesh)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a triangle mesh from a plain ASCII OFF file into `map`.
-/// \throws Read_error if the file is missing or malformed.
+/// \throws Read_error if the file is missing, not a regular file, malformed
+/// or too large for the memory.
 inline Mesh_file read_OFF(const std::string& path)
 {
-  internal::Text_file file(path, '#');
-  std::pair<std::size_t, std::size_t> counts = internal::read_OFF_header(file);
-  Mesh_file mesh;
-  mesh.simplex_size = 3;
-  internal::read_OFF_vertices(file, counts.first, mesh);
-  internal::read_OFF_faces(file, counts.second, mesh);
-  mesh.map_dimension = internal::dimension_of(mesh.map, 3);
-  return mesh;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path, '#');
+    std::pair<std::size_t, std::size_t> counts = internal::read_OFF_header(file);
+    Mesh_file mesh;
+    mesh.simplex_size = 3;
+    internal::read_OFF_vertices(file, counts.first, mesh);
+    internal::read_OFF_faces(file, counts.second, mesh);
+    mesh.map_dimension = internal::dimension_of(mesh.map, 3);
+    return mesh;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO

@@ -35,7 +35,7 @@ inline std::pair<std::size_t, std::size_t> read_input_header(Text_file& file, co
   line = tokens[0].line;
   if(tokens.size() != 2)
     file.fail(line, "expected the " + block + " block header " + layout + ", got "
-                        + std::to_string(tokens.size()) + " tokens");
+                        + std::to_string(file.tokens_on_line()) + " tokens");
   return {to_size(file, tokens[0], count_name), to_size(file, tokens[1], second_name)};
 }
 
@@ -54,7 +54,7 @@ inline std::vector<std::array<double, 3>> read_input_positions(Text_file& file, 
     const std::string what = block + " vertex " + std::to_string(i);
     if(tokens.size() != static_cast<std::size_t>(dimension))
       file.fail(tokens[0].line, what + ": expected " + std::to_string(dimension) + " coordinates, got "
-                                    + std::to_string(tokens.size()));
+                                    + std::to_string(file.tokens_on_line()));
     points.push_back(to_point(file, tokens, 0, dimension, what));
   }
   return points;
@@ -86,7 +86,7 @@ inline void read_input_simplices(Text_file& file, Mesh_file& mesh)
     const std::string what = std::string(simplex_name(mesh.simplex_size)) + " " + std::to_string(i);
     if(tokens.size() != k)
       file.fail(tokens[0].line, what + ": expected " + std::to_string(k) + " vertex indices, got "
-                                    + std::to_string(tokens.size()));
+                                    + std::to_string(file.tokens_on_line()));
     std::array<std::size_t, 4> s = {0, 0, 0, 0};
     for(std::size_t c = 0; c < k; ++c)
       s[c] = to_size(file, tokens[c], "vertex index of " + what);
@@ -94,6 +94,7 @@ inline void read_input_simplices(Text_file& file, Mesh_file& mesh)
     if(!defect.empty())
       file.fail(tokens[0].line, what + ": " + defect);
     mesh.simplices.push_back(s);
+    mesh.simplex_lines.push_back(tokens[0].line);
   }
 }
 
@@ -141,21 +142,23 @@ inline void write_input_positions(std::ostream& out, const std::vector<std::arra
 /// \throws Read_error if the file is missing or malformed.
 inline Mesh_file read_TLC_input(const std::string& path)
 {
-  internal::Text_file file(path);
-  Mesh_file mesh;
-  std::size_t line = 0;
-  std::pair<std::size_t, std::size_t> rest = internal::read_input_header(file, "rest", "nV", "dimRest", line);
-  mesh.rest_dimension = internal::read_input_dimension(file, rest.second, line, "dimRest");
-  mesh.rest = internal::read_input_positions(file, "rest", rest.first, mesh.rest_dimension);
-  std::pair<std::size_t, std::size_t> init = internal::read_input_header(file, "initial", "nV", "dimInit", line);
-  if(init.first != rest.first)
-    file.fail(line, "the initial block has " + std::to_string(init.first) + " vertices but the rest block has "
-                        + std::to_string(rest.first));
-  mesh.map_dimension = internal::read_input_dimension(file, init.second, line, "dimInit");
-  mesh.map = internal::read_input_positions(file, "initial", init.first, mesh.map_dimension);
-  internal::read_input_simplices(file, mesh);
-  internal::read_input_handles(file, mesh);
-  return mesh;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path);
+    Mesh_file mesh;
+    std::size_t line = 0;
+    std::pair<std::size_t, std::size_t> rest = internal::read_input_header(file, "rest", "nV", "dimRest", line);
+    mesh.rest_dimension = internal::read_input_dimension(file, rest.second, line, "dimRest");
+    mesh.rest = internal::read_input_positions(file, "rest", rest.first, mesh.rest_dimension);
+    std::pair<std::size_t, std::size_t> init = internal::read_input_header(file, "initial", "nV", "dimInit", line);
+    if(init.first != rest.first)
+      file.fail(line, "the initial block has " + std::to_string(init.first) + " vertices but the rest block has "
+                          + std::to_string(rest.first));
+    mesh.map_dimension = internal::read_input_dimension(file, init.second, line, "dimInit");
+    mesh.map = internal::read_input_positions(file, "initial", init.first, mesh.map_dimension);
+    internal::read_input_simplices(file, mesh);
+    internal::read_input_handles(file, mesh);
+    return mesh;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO

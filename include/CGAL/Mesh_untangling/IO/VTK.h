@@ -242,7 +242,9 @@ inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
     std::array<double, 3> p;
     for(int c = 0; c < 3; ++c) {
       Token t = next_VTK_value(file, "POINTS", i, count, "points");
-      p[c] = to_double(file, t, std::string(axis[c]) + " coordinate of point " + std::to_string(i));
+      // (the message is built only on failure: this runs once per number)
+      if(parse_double(t.text, p[c]) != Number_status::OK)
+        to_double(file, t, std::string(axis[c]) + " coordinate of point " + std::to_string(i));   // throws
     }
     mesh.map.push_back(p);
   }
@@ -319,6 +321,7 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
                             + std::to_string(cells[i].size) + " vertices");
     mesh.simplex_size = k;
     mesh.simplices.push_back(cells[i].ids);
+    mesh.simplex_lines.push_back(cells[i].line);
   }
 }
 
@@ -400,10 +403,12 @@ inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, 
   }
 }
 
-// No section for no entries (a file of no phantom has no cells to attach fields to).
+// No CELL_DATA for no cell (a file of no phantom has no cells to attach
+// fields to); a POINT_DATA of no point still says that the file lists its
+// fixed vertices (none), so that it reads back as it was written.
 inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section)
 {
-  if(fields.empty() || size == 0)
+  if(fields.empty() || (size == 0 && std::string(section) == "CELL_DATA"))
     return;
   out << section << ' ' << size << '\n';
   for(const VTK_field& field : fields) {
@@ -475,15 +480,17 @@ inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 /// its `fixed` scalar holds anything but a 0 or a 1 per point.
 inline Mesh_file read_VTK(const std::string& path)
 {
-  internal::Text_file file(path);
-  internal::read_VTK_header(file);
-  Mesh_file mesh;
-  internal::read_VTK_points(file, mesh);
-  std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
-  internal::read_VTK_cell_types(file, cells, mesh);
-  internal::read_VTK_attributes(file, mesh);
-  mesh.map_dimension = internal::dimension_of(mesh.map, mesh.simplex_size);
-  return mesh;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path);
+    internal::read_VTK_header(file);
+    Mesh_file mesh;
+    internal::read_VTK_points(file, mesh);
+    std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
+    internal::read_VTK_cell_types(file, cells, mesh);
+    internal::read_VTK_attributes(file, mesh);
+    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.simplex_size);
+    return mesh;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO

@@ -29,28 +29,30 @@ namespace IO {
 /// that is not less than `number_of_vertices`.
 inline std::vector<std::size_t> read_handles(const std::string& path, std::size_t number_of_vertices)
 {
-  internal::Text_file file(path);
-  internal::Token token;
-  bool more = file.next_token(token);
-  double ignored;
-  if(more && token.line == 1
-     && internal::parse_double(token.text, ignored) == internal::Number_status::NOT_A_NUMBER) {
-    std::string_view header;
-    std::size_t line;
-    file.next_raw_line(header, line);
-    more = file.next_token(token);
-  }
-  std::vector<std::size_t> ids;
-  for(; more; more = file.next_token(token)) {
-    const std::size_t id = internal::to_size(file, token, "vertex id");
-    if(id >= number_of_vertices)
-      file.fail(token.line, "vertex id " + std::to_string(id) + " is out of range "
-                                + internal::index_range(number_of_vertices, 0));
-    ids.push_back(id);
-  }
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  return ids;
+  return internal::read_or_report_memory(path, [&] {
+    internal::Text_file file(path);
+    internal::Token token;
+    bool more = file.next_token(token);
+    double ignored;
+    if(more && token.line == 1
+       && internal::parse_double(token.text, ignored) == internal::Number_status::NOT_A_NUMBER) {
+      std::string_view header;
+      std::size_t line;
+      file.next_raw_line(header, line);
+      more = file.next_token(token);
+    }
+    std::vector<std::size_t> ids;
+    for(; more; more = file.next_token(token)) {
+      const std::size_t id = internal::to_size(file, token, "vertex id");
+      if(id >= number_of_vertices)
+        file.fail(token.line, "vertex id " + std::to_string(id) + " is out of range "
+                                  + internal::index_range(number_of_vertices, 0));
+      ids.push_back(id);
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+  });
 }
 
 /// \ingroup PkgMeshUntanglingIO

@@ -4,14 +4,13 @@
 #define CGAL_MESH_UNTANGLING_IO_INTERNAL_ATOMIC_OUTPUT_FILE_H
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
+#include <CGAL/Mesh_untangling/IO/internal/output_target.h>
 
-#include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <system_error>
 
@@ -20,33 +19,27 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-// Same directory as the target, so that the final rename cannot cross file
-// systems; the suffix keeps concurrent writers of one target apart.
-inline std::string temporary_name(const std::string& target)
-{
-  static std::atomic<unsigned long> counter{0};
-  unsigned long long salt = static_cast<unsigned long long>(
-      std::chrono::steady_clock::now().time_since_epoch().count());
-  std::ostringstream name;
-  name << target << '.' << std::hex << (salt ^ (counter++ * 0x9E3779B97F4A7C15ull)) << ".tmp";
-  return name.str();
-}
-
 // Writes to a temporary file and renames it over the target on commit(), so
 // that a failed or interrupted write never leaves a partial file under the
 // target's name (a half-written map would be read back as a smaller mesh or
-// fail much later). The destructor removes the temporary if not committed.
+// fail much later). The destructor removes the temporary if not committed;
+// so does a SIGINT or SIGTERM once remove_temporaries_on_interrupt() is on.
+// A symbolic link is followed: its target is replaced, the link kept.
 class Atomic_output_file
 {
 public:
   explicit Atomic_output_file(const std::string& target)
-    : target_(target), temporary_(temporary_name(target))
+    : target_(target), destination_(resolve_output_target(target)), temporary_(temporary_name(destination_)),
+      slot_(register_temporary(temporary_))
   {
     errno = 0;
     out_.open(temporary_, std::ios::binary | std::ios::trunc);
-    if(!out_)
+    if(!out_) {
+      const int error = errno;
+      unregister_temporary(slot_);
       throw Write_error(target_, "cannot create temporary file '" + temporary_ + "': "
-                                     + std::generic_category().message(errno));
+                                     + std::generic_category().message(error));
+    }
   }
 
   Atomic_output_file(const Atomic_output_file&) = delete;
@@ -58,6 +51,7 @@ public:
       out_.close();
       std::remove(temporary_.c_str());
     }
+    unregister_temporary(slot_);
   }
 
   std::ostream& stream() { return out_; }
@@ -73,25 +67,29 @@ public:
       throw Write_error(target_, "cannot rename '" + temporary_ + "' to the target: "
                                      + std::generic_category().message(errno));
     committed_ = true;
+    unregister_temporary(slot_);
+    slot_ = -1;
   }
 
 private:
   bool replace_target()
   {
     errno = 0;
-    if(std::rename(temporary_.c_str(), target_.c_str()) == 0)
+    if(std::rename(temporary_.c_str(), destination_.c_str()) == 0)
       return true;
 #ifdef _WIN32
     // Windows' rename() does not replace an existing file.
-    std::remove(target_.c_str());
-    if(std::rename(temporary_.c_str(), target_.c_str()) == 0)
+    std::remove(destination_.c_str());
+    if(std::rename(temporary_.c_str(), destination_.c_str()) == 0)
       return true;
 #endif
     return false;
   }
 
-  std::string target_;
+  std::string target_;        // as given, for messages
+  std::string destination_;   // the file replaced: the target, or the file its link leads to
   std::string temporary_;
+  int slot_;
   std::ofstream out_;
   bool committed_ = false;
 };

@@ -4,12 +4,14 @@
 #define CGAL_MESH_UNTANGLING_IO_INTERNAL_TEXT_FILE_H
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/file_type.h>
 
 #include <cerrno>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -26,13 +28,33 @@ struct Token
   std::size_t line = 0;
 };
 
-inline std::string read_whole_file(const std::string& path)
+// Checked before opening: opening a FIFO without a writer would block.
+inline void check_regular_input(const std::string& path)
 {
   std::error_code ec;
-  if(!std::filesystem::exists(path, ec))
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  if(type == std::filesystem::file_type::not_found)
     throw Read_error(path, 0, "file not found");
-  if(std::filesystem::is_directory(path, ec))
-    throw Read_error(path, 0, "is a directory, not a file");
+  if(is_special_file(type))
+    throw Read_error(path, 0, "is " + special_file_name(type) + ", not a regular file");
+}
+
+/// Runs a reader, turning a failed allocation (a file too large for the
+/// memory, or a memory cap) into a Read_error that names the file.
+template <class Reader>
+auto read_or_report_memory(const std::string& path, Reader read) -> decltype(read())
+{
+  try {
+    return read();
+  } catch(const std::bad_alloc&) {
+    throw Read_error(path, 0, "out of memory while reading it");
+  }
+}
+
+inline std::string read_whole_file(const std::string& path)
+{
+  check_regular_input(path);
+  std::error_code ec;
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if(!in)
@@ -93,17 +115,23 @@ public:
     return true;
   }
 
-  /// The tokens of the next line that has any; false at the end of the file.
-  bool next_line(std::vector<Token>& tokens)
+  /// The tokens of the next line that has any, at most `max_kept` of them:
+  /// the others are only counted (tokens_on_line()), so that a run-away line
+  /// costs no memory. False at the end of the file.
+  bool next_line(std::vector<Token>& tokens, std::size_t max_kept = 9)
   {
     tokens.clear();
-    while(tokens.empty()) {
+    tokens_on_line_ = 0;
+    while(tokens_on_line_ == 0) {
       if(pos_ == text_.size())
         return false;
-      read_rest_of_line(tokens);
+      read_rest_of_line(tokens, max_kept);
     }
     return true;
   }
+
+  /// How many tokens the line last read by next_line() has, kept or not.
+  std::size_t tokens_on_line() const { return tokens_on_line_; }
 
   /// The rest of the current line, verbatim (free-text lines such as a VTK
   /// title, which may even be empty); false at the end of the file.
@@ -172,7 +200,7 @@ private:
     return std::string_view(text_).substr(begin, pos_ - begin);
   }
 
-  void read_rest_of_line(std::vector<Token>& tokens)
+  void read_rest_of_line(std::vector<Token>& tokens, std::size_t max_kept)
   {
     for(;;) {
       skip_blanks_on_line();
@@ -183,7 +211,9 @@ private:
         ++line_;
         return;
       }
-      tokens.push_back(Token{take_word(), line_});
+      const Token token{take_word(), line_};
+      if(tokens_on_line_++ < max_kept)
+        tokens.push_back(token);
     }
   }
 
@@ -193,6 +223,7 @@ private:
   std::size_t pos_ = 0;
   std::size_t line_ = 1;
   std::size_t last_line_ = 1;
+  std::size_t tokens_on_line_ = 0;
 };
 
 } // namespace internal

@@ -68,7 +68,9 @@ inline std::array<double, 3> to_point(const Text_file& file, const std::vector<T
   static const char* const axis[] = {"x", "y", "z"};
   std::array<double, 3> p = {0, 0, 0};
   for(int c = 0; c < dimension; ++c)
-    p[c] = to_double(file, tokens[first + c], std::string(axis[c]) + " coordinate of " + what);
+    // (the message is built only on failure: this runs once per number)
+    if(parse_double(tokens[first + c].text, p[c]) != Number_status::OK)
+      to_double(file, tokens[first + c], std::string(axis[c]) + " coordinate of " + what);   // throws
   return p;
 }
 
