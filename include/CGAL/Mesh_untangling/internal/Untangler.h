@@ -43,6 +43,8 @@ struct Untangling_options
   // When the continuation will follow a failed direct untangling, a stall of
   // stage 0 already tells that the direct way is blocked (see continuation.h).
   bool give_up_on_stall = false;
+  // Stage 0 runs until its energy settles or the budget is spent (local_repair.h).
+  bool stage_0_never_stalls = false;
 };
 
 constexpr int max_restarts = 10;           // shakes in stage 1
@@ -564,7 +566,9 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
     if(!settled_by_trial) P.x = start;
   }
   if(!settled_by_trial)
-    outcome = loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
+    outcome = loop.run(P, 0, options.stage_0_never_stalls ? Stall_test::NONE
+                             : regular_targets_follow      ? Stall_test::COUNT_NOT_HALVED
+                                                           : Stall_test::COUNT_STANDS);
   if(outcome.stalled && !options.give_up_on_stall) {
     Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
     // with given targets, stage 2 takes over from the first valid map

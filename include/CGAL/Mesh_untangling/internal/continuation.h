@@ -21,6 +21,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 
 #include <CGAL/Mesh_untangling/internal/Untangler.h>
+#include <CGAL/Mesh_untangling/internal/local_repair.h>
 
 #include <algorithm>
 #include <chrono>
@@ -290,6 +291,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
 {
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
   Untangling_result r = untangle_as_asked<d>(in, options, protection, phantoms_used);
+  repair_locally_after<d>(in, given, options, r);
   if(r.status != Untangling_status::SUCCESS && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   return r;
