@@ -12,8 +12,8 @@
 // cross.  The local phase cuts out the elements within k vertex rings of the
 // inverted ones (k = 1, 2, ...), fixes the vertices on the cut, and untangles
 // that small problem afresh: its eps schedule restarts from the small
-// problem's own (negative) smallest det J, and Newton solves it in
-// milliseconds.  A success inside the region is a success of the whole map,
+// problem's own (negative) smallest det J, and Newton solves it in 0.1 to
+// 0.5 s per region (150 eps steps at most).  A success inside the region is a success of the whole map,
 // since no element outside it moves.  Measured (one core, 120 s): s16c 12
 // and joint 73 are repaired at 2 rings; rockerarm 348 at 4 rings, and only
 // with the shape term alone (theta = 0: with the default 1/2 no ring up to 6
