@@ -765,6 +765,18 @@ if [ -n "$DATA" ] && [ -f "$joint/parameter.vtk" ]; then
     [ "$(json_get least.json inverted_after)" -lt 20 ]
   check "least tangled map: not the input" json_is least.json input_returned false
 fi
+# The local phase (internal/local_repair.h): the global run leaves CuboidBlocks
+# rockerarm 348 with 1 inverted tet after 253 eps steps (exit 1 before the
+# local phase); the region of 4 rings around it, untangled with the shape
+# term alone, repairs it.
+r348="$DATA/cuboidblocks/rockerarm.hexex_block348"
+if [ -n "$DATA" ] && [ -f "$r348/parameter.vtk" ]; then
+  run local348 "$r348/parameter.vtk" --rest "$r348/object.vtk" --fixed "$r348/handles.txt" --threads 1 \
+    -o local348.vtk --report local348.json -q
+  check "local phase: rockerarm 348 exit 0" rc_is local348 0
+  check "local phase: no inverted tet" json_is local348.json inverted_after 0
+  check "local phase: more eps steps than the global run's 253" [ "$(json_get local348.json outer_iterations)" -gt 253 ]
+fi
 
 #
 # Every vertex fixed and some triangles inverted: nothing can repair them.

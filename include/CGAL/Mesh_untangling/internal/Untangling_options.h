@@ -32,6 +32,8 @@ struct Untangling_options
   // When the continuation will follow a failed direct untangling, a stall of
   // stage 0 already tells that the direct way is blocked (see continuation.h).
   bool give_up_on_stall = false;
+  // Stage 0 runs until its energy settles or the budget is spent (local_repair.h).
+  bool stage_0_never_stalls = false;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };

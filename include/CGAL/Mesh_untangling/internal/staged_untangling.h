@@ -76,10 +76,11 @@ void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>
 
 /// Stage 0: the given targets, after the published scheme's trial where
 /// Solver::AUTOMATIC asks for it (Eps_loop::tries_lbfgs_first).  Gives up on
-/// a stall early (Stall_test::COUNT_NOT_HALVED) when stage 1 would follow.
+/// a stall early (Stall_test::COUNT_NOT_HALVED) when stage 1 would follow,
+/// and never with `never_stall` (the patient rerun of local_repair.h).
 template <int d>
 Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, const std::vector<bool>& is_fixed,
-                             Eps_loop<d>& loop, bool regular_targets_follow)
+                             Eps_loop<d>& loop, bool regular_targets_follow, bool never_stall)
 {
   Eps_loop_outcome outcome;
   if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
@@ -91,7 +92,9 @@ Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, 
       return outcome;
     P.x = start;
   }
-  return loop.run(P, 0, regular_targets_follow ? Stall_test::COUNT_NOT_HALVED : Stall_test::COUNT_STANDS);
+  return loop.run(P, 0, never_stall             ? Stall_test::NONE
+                        : regular_targets_follow ? Stall_test::COUNT_NOT_HALVED
+                                                 : Stall_test::COUNT_STANDS);
 }
 
 /// After stage 0 stalled (`outcome`, its end): stage 1 untangles toward regular targets (with
@@ -176,7 +179,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
   const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
-  Eps_loop_outcome outcome = run_stage_0(P, in, is_fixed, loop, regular_targets_follow);
+  Eps_loop_outcome outcome = run_stage_0(P, in, is_fixed, loop, regular_targets_follow, options.stage_0_never_stalls);
   if(outcome.stalled && !options.give_up_on_stall) outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome);
   auto summary = determinant_summary(P, P.x.data());
   if(loop.restore_least_tangled(P, summary.non_positive)) {

@@ -3,12 +3,14 @@
 //
 // The one internal entry every public entry point calls, and its policy of
 // fallbacks in one place: the direct untangling, then (free boundaries,
-// prescribed motions) the continuation from the rest shape, and, when a run
-// fails, whichever of its result and its input has fewer defects.
+// prescribed motions) the continuation from the rest shape; (fixed
+// boundaries) the local repair of the few elements left inverted; and, when
+// a run fails, whichever of its result and its input has fewer defects.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
 
 #include <CGAL/Mesh_untangling/internal/continuation.h>
+#include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
@@ -186,6 +188,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
   Untangling_result r = untangle_as_asked<d>(in, options, protection, phantoms_used);
+  repair_locally_after<d>(in, given, options, r);
   if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);
