@@ -85,10 +85,14 @@ int main()
   // 3D
   check_instance("Kuhn cavities 1 cav, margin 3, 90°", make_kuhn_cavities(2, 3, 1, 90), true);
   check_instance("Kuhn cavities 2 cav, margin 2, 135°", make_kuhn_cavities(2, 2, 2, 135), true);
-  for(const auto& f : free_boundary_families())   // (built only with TetGen)
-    if(f.name == "cavities-tetgen")
-      for(const Family_instance& i : free_boundary_family(f.name, Family_size::QUICK))
-        if(i.name == "cavities-tetgen-h1-135deg") check_instance(i.name, i.make(), true);
+  for(const auto& f : free_boundary_families()) {   // (built only with TetGen)
+    if(f.name != "cavities-tetgen" && f.name != "locked-region-tetgen") continue;
+    for(const Family_instance& i : free_boundary_family(f.name, Family_size::QUICK))
+      if(i.name == "cavities-tetgen-h1-135deg" || i.name == "locked-tetgen-ball-wave0.1-h0.6") {
+        check_tangled(i.name, i.make(), 1);
+        check_instance(i.name, i.make(), true);
+      }
+  }
   check_instance("bar 16x3x3 twisted 120°", make_bar(16, 3, "twist", 120), true);
   check_instance("bar 16x3x3 shifted", make_bar(16, 3, "shift", 0), true);
   for(const Family_instance& i : free_boundary_family("locked-region", Family_size::QUICK)) {

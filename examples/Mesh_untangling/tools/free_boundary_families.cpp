@@ -312,38 +312,65 @@ Mesh_file make_bar(std::size_t nx, std::size_t w, const std::string& motion, dou
   return m;
 }
 
-Mesh_file make_locked_region(std::size_t n, const std::string& region, const std::string& deformation, double strength)
+namespace {
+
+/// Locks about a third of the vertices of a mesh of the box [0, extent]
+/// (see make_locked_region; the region and the deformation are those of the
+/// unit cube, stretched to the box).
+void lock_region(Mesh_file& m, const Vec3& extent, const std::string& region, const std::string& deformation,
+                 double strength)
 {
   if(region != "bottom" && region != "middle" && region != "ball")
     throw std::invalid_argument("locked region: unknown region '" + region + "' (bottom, middle, ball)");
   if(deformation != "twist" && deformation != "wave")
     throw std::invalid_argument("locked region: unknown deformation '" + deformation + "' (twist, wave)");
-  Mesh_file m = make_box_grid(n, n, n, [](std::size_t, std::size_t, std::size_t) { return true; });
-  for(auto& p : m.rest)
-    for(double& c : p) c /= double(n);
-  m.map = m.rest;
   const double ball_radius = std::cbrt(1. / (4 * pi));   // a third of the cube's volume
-  auto locked = [&](const Vec3& p) {
-    if(region == "bottom") return p[2] < 1. / 3;
-    if(region == "middle") return p[2] >= 1. / 3 && p[2] <= 2. / 3;
-    const double x = p[0] - 0.5, y = p[1] - 0.5, z = p[2] - 0.5;
+  auto locked = [&](const Vec3& q) {
+    if(region == "bottom") return q[2] < 1. / 3;
+    if(region == "middle") return q[2] >= 1. / 3 && q[2] <= 2. / 3;
+    const double x = q[0] - 0.5, y = q[1] - 0.5, z = q[2] - 0.5;
     return x * x + y * y + z * z <= ball_radius * ball_radius;
   };
+  m.map = m.rest;
   std::vector<std::size_t> fixed;
   for(std::size_t v = 0; v < m.rest.size(); ++v) {
     const Vec3& p = m.rest[v];
-    if(!locked(p)) continue;
+    const Vec3 q = {p[0] / extent[0], p[1] / extent[1], p[2] / extent[2]};
+    if(!locked(q)) continue;
     fixed.push_back(v);
     if(deformation == "twist")
-      m.map[v] = turned_about_vertical(p, 0.5, 0.5, radians(strength) * (0.5 + p[2]));
+      m.map[v] = turned_about_vertical(p, 0.5 * extent[0], 0.5 * extent[1], radians(strength) * (0.5 + q[2]));
     else
-      m.map[v] = {p[0] + strength * std::sin(pi * p[1]) * std::sin(2 * pi * p[2]),
-                  p[1] + strength * std::sin(pi * p[2]) * std::sin(2 * pi * p[0]),
-                  p[2] + strength * std::sin(pi * p[0]) * std::sin(2 * pi * p[1])};
+      m.map[v] = {p[0] + extent[0] * strength * std::sin(pi * q[1]) * std::sin(2 * pi * q[2]),
+                  p[1] + extent[1] * strength * std::sin(pi * q[2]) * std::sin(2 * pi * q[0]),
+                  p[2] + extent[2] * strength * std::sin(pi * q[0]) * std::sin(2 * pi * q[1])};
   }
   set_fixed(m, fixed);
+}
+
+} // namespace
+
+Mesh_file make_locked_region(std::size_t n, const std::string& region, const std::string& deformation, double strength)
+{
+  Mesh_file m = make_box_grid(n, n, n, [](std::size_t, std::size_t, std::size_t) { return true; });
+  for(auto& p : m.rest)
+    for(double& c : p) c /= double(n);
+  lock_region(m, {1., 1., 1.}, region, deformation, strength);
   return m;
 }
+
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region, const std::string& deformation,
+                                    double strength)
+{
+  Cavities_options o;
+  o.mesh_size = mesh_size;
+  o.rotation_degrees = 0;
+  Mesh_file m = make_cavities_problem(o);
+  lock_region(m, {4., 2., 2.}, region, deformation, strength);
+  return m;
+}
+#endif
 
 // ---------------------------------------------------------------------------
 // Families
@@ -551,6 +578,31 @@ std::vector<Family_instance> locked_regions(Family_size size)
   return out;
 }
 
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+std::vector<Family_instance> tetgen_locked_regions(Family_size size)
+{
+  std::vector<Family_instance> out;
+  auto add = [&](double mesh_size, const std::string& region, const std::string& deformation, double strength) {
+    const std::string name = "locked-tetgen-" + region + "-" + deformation + format(strength) + "-h" + format(mesh_size);
+    out.push_back({"locked-region-tetgen", name, true,
+                   [=] { return make_tetgen_locked_region(mesh_size, region, deformation, strength); }});
+  };
+  if(size == Family_size::QUICK) {
+    add(0.6, "middle", "twist", 120);
+    add(0.6, "ball", "wave", 0.1);
+    return out;
+  }
+  for(const char* region : {"bottom", "middle", "ball"}) {
+    add(0.4, region, "twist", 150);
+    add(0.4, region, "wave", 0.1);
+  }
+  // about 50k tets
+  add(0.2, "middle", "twist", 120);
+  add(0.2, "ball", "twist", 180);
+  return out;
+}
+#endif
+
 } // namespace
 
 std::vector<Family_description> free_boundary_families()
@@ -568,6 +620,9 @@ std::vector<Family_description> free_boundary_families()
 #endif
     {"bar", "3D: Kuhn bars of 10k-50k tets (200k with --large), one end fixed, the other twisted, bent or shifted"},
     {"locked-region", "3D: a third of a Kuhn cube (slab or ball) deformed and fixed, the rest at rest"},
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+    {"locked-region-tetgen", "3D: a third of a TetGen cuboid with two cavities (slab or ball) deformed and fixed, the rest at rest"},
+#endif
   };
   return f;
 }
@@ -586,6 +641,9 @@ std::vector<Family_instance> free_boundary_family(const std::string& family, Fam
 #endif
   if(family == "bar") return bars(size);
   if(family == "locked-region") return locked_regions(size);
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+  if(family == "locked-region-tetgen") return tetgen_locked_regions(size);
+#endif
   throw std::invalid_argument("unknown family '" + family + "'");
 }
 

@@ -90,6 +90,12 @@ Mesh_file make_bar(std::size_t nx, std::size_t w, const std::string& motion, dou
 /// sin pi x sin 2 pi y) times `strength` (below 1 / (2 pi)).
 Mesh_file make_locked_region(std::size_t n, const std::string& region, const std::string& deformation, double strength);
 
+/// The same on the TetGen mesh of the cavities problem (tools/cavities.h) at
+/// `mesh_size`, its cavity walls free: the region and deformation of the unit
+/// cube stretched to the 4 x 2 x 2 cuboid.  Only when TetGen is built.
+Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region, const std::string& deformation,
+                                    double strength);
+
 // ---------------------------------------------------------------------------
 // Families
 
