@@ -2,11 +2,11 @@
 # Bad arguments of the benchmark programs: exit 2, a message that names the
 # argument, nothing on stdout and no run started.
 #
-# usage: test_benchmark_arguments.sh BENCHMARK_UNTANGLE ENERGY_BANDWIDTH [BENCHMARK_CAVITIES]
+# usage: test_benchmark_arguments.sh BENCHMARK_UNTANGLE ENERGY_BANDWIDTH BENCHMARK_FREE_BOUNDARY [BENCHMARK_CAVITIES]
 # (the last is built only with TetGen)
 set -u
-if [ $# -lt 2 ]; then
-  echo "usage: $0 BENCHMARK_UNTANGLE ENERGY_BANDWIDTH [BENCHMARK_CAVITIES]" >&2
+if [ $# -lt 3 ]; then
+  echo "usage: $0 BENCHMARK_UNTANGLE ENERGY_BANDWIDTH BENCHMARK_FREE_BOUNDARY [BENCHMARK_CAVITIES]" >&2
   exit 2
 fi
 T=$(mktemp -d "${TMPDIR:-/tmp}/test_benchmark_arguments.XXXXXX") || exit 2
@@ -33,8 +33,27 @@ refused "benchmark_untangle: time limit 0" "--time-limit" "$1" --time-limit 0 ge
 refused "energy_bandwidth: 0 threads" "--threads needs a positive integer" "$2" --threads 0 generated:square:10:2:1
 refused "energy_bandwidth: unknown shape" "unknown shape 'blob'" "$2" generated:blob:10:2:1
 
-if [ $# -ge 3 ] && [ -n "$3" ]; then
-  B=$3
+F=$3
+refused "benchmark_free_boundary: unknown family" "--family: unknown family 'blob'" "$F" --family blob
+refused "benchmark_free_boundary: empty family list" "--family needs at least one family name" "$F" --family ,
+refused "benchmark_free_boundary: family without value" "--family needs a value" "$F" --family
+refused "benchmark_free_boundary: time limit 0" "--time-limit: '0' is not a positive number of seconds" "$F" --time-limit 0
+refused "benchmark_free_boundary: time limit 5s" "--time-limit: '5s' is not a positive number of seconds" "$F" --time-limit 5s
+refused "benchmark_free_boundary: threads 1.5" "--threads: '1.5' is not a positive number of threads" "$F" --threads 1.5
+refused "benchmark_free_boundary: quick and large" "--quick and --large exclude each other" "$F" --quick --large
+refused "benchmark_free_boundary: unknown instance" "--instance: no instance of the selected families has that name" "$F" --instance nothing-like-this
+refused "benchmark_free_boundary: unknown argument" "unknown argument '--fast'" "$F" --fast
+# the instances it lists are the ones --instance selects; --write saves them for the command-line tool
+checks=$((checks + 1))
+if ! "$F" --quick --family twelve-star --instance twelve-star-fixed1-tilt80-noise0.09-s1 --write "$T/w" > "$T/out" 2> "$T/err" \
+   || [ "$(ls "$T/w")" != "twelve-star-fixed1-tilt80-noise0.09-s1.input" ] \
+   || ! "$F" --quick --list | grep -Fqx "  twelve-star-fixed1-tilt80-noise0.09-s1"; then
+  failures=$((failures + 1))
+  echo "FAIL: benchmark_free_boundary --write/--list: $(cat "$T/err")" >&2
+fi
+
+if [ $# -ge 4 ] && [ -n "$4" ]; then
+  B=$4
   refused "benchmark_cavities: --degrees x" "--degrees needs a number, not 'x'" "$B" --degrees x 1
   refused "benchmark_cavities: --degrees 45abc" "--degrees needs a number, not '45abc'" "$B" --degrees 45abc 1
   refused "benchmark_cavities: --time-limit -5" "--time-limit needs a number of seconds above 0, not '-5'" "$B" --time-limit -5 1
