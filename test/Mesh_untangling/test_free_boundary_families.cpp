@@ -82,6 +82,20 @@ int main()
     check_instance(name, make_twelve_star(fixed, 70, 0.05, 3), false);
   }
 
+  // A run that can no longer move (eps at its floor, no inner iteration)
+  // stops: this swap went on for 5,000 idle eps steps, the whole budget.
+  bool idle_case_found = false;
+  for(const Family_instance& i : free_boundary_family("swap-grid", Family_size::DEFAULT))
+    if(i.name == "swap-grid-8-29-40-s9") {
+      idle_case_found = true;
+      Mesh_file mesh = i.make();
+      const Judgement j = untangle_and_judge(mesh, 120);
+      std::printf("%-48s %zu eps steps, %.2f s\n", i.name.c_str(), j.eps_steps, j.seconds);
+      CHECK_MESSAGE(j.eps_steps < 1000, i.name << ": " << j.eps_steps << " eps steps");
+      CHECK_MESSAGE(j.fixed_moved == 0, i.name << ": fixed vertices moved");
+    }
+  CHECK(idle_case_found);
+
   // 3D
   check_instance("Kuhn cavities 1 cav, margin 3, 90°", make_kuhn_cavities(2, 3, 1, 90), true);
   check_instance("Kuhn cavities 2 cav, margin 2, 135°", make_kuhn_cavities(2, 2, 2, 135), true);

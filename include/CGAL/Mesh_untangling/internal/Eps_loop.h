@@ -184,6 +184,7 @@ public:
     std::size_t best = initial_count, since_best = 0;
     const bool must_halve = stall == Stall_test::COUNT_NOT_HALVED && newton != nullptr;
     std::vector<std::size_t> counts;   // of non-positive elements after each step
+    std::size_t idle_steps = 0;        // in a row, without an inner iteration
     while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
@@ -224,8 +225,16 @@ public:
       }
       // Below tiny_epsilon the energy of a flat element overflows long before
       // it helps: the floor keeps the problem numerically solvable.
-      eps = std::min(eps_cap, newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
-                                     : std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon));
+      const double next_eps =
+        std::min(eps_cap, newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
+                                 : std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon));
+      // A step that moved nothing, at an eps that stays, is followed by the
+      // same: at the eps floor, with phantoms that no valid map of the mesh
+      // satisfies, runs went on with 5,000 such steps (free-boundary bars and
+      // swaps, 52 s on a ruffled disk) whatever the stall test.
+      idle_steps = inner.iterations == 0 && next_eps == eps ? idle_steps + 1 : 0;
+      if(idle_steps >= stall_patience()) { out.stalled = summary.non_positive > 0; break; }
+      eps = next_eps;
       if(out_of_time() || trial_evaluations_left_ == 0) { out.stopped = true; break; }
     }
     return out;
