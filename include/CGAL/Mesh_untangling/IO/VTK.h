@@ -400,10 +400,13 @@ inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, 
   }
 }
 
-// No section for no entries (a file of no phantom has no cells to attach fields to).
-inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section)
+// No section for no entries (a file of no phantom has no cells to attach
+// fields to), unless `even_if_empty`: the 'fixed' scalar of a mesh of no point
+// still says that the mesh lists its fixed vertices (has_fixed).
+inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section,
+                             bool even_if_empty = false)
 {
-  if(fields.empty() || size == 0)
+  if(fields.empty() || (size == 0 && !even_if_empty))
     return;
   out << section << ' ' << size << '\n';
   for(const VTK_field& field : fields) {
@@ -514,7 +517,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
   }
   internal::write_VTK_cells(out, mesh);
   internal::write_VTK_fields(out, cell_fields, mesh.simplices.size(), "CELL_DATA");
-  internal::write_VTK_fields(out, all_point_fields, points.size(), "POINT_DATA");
+  internal::write_VTK_fields(out, all_point_fields, points.size(), "POINT_DATA", mesh.has_fixed);
   file.commit();
 }
 
