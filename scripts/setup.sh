@@ -32,7 +32,9 @@ done
 # Debian's default is the reference BLAS (with OpenBLAS armadillo-598 is
 # 1.25x faster, 100 x 100 and 150 x 150 grids by Newton 1.2-1.6x); the
 # serial build, so that results stay the same bits with any number of threads.
-PACKAGES=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
+# clang, libclang-rt-dev: the libFuzzer targets (test/Mesh_untangling/fuzz,
+# ctest fuzz_*); libclang-rt-dev holds libclang_rt.fuzzer for Debian's clang.
+PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
           libsuitesparse-dev libopenblas0-serial liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev
           libmpfr-dev)
 installed() { [[ "$(dpkg -s "$1" 2> /dev/null)" == *"Status: install ok installed"* ]]; }

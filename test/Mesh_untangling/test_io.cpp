@@ -435,6 +435,14 @@ void test_vtk_fixed_flags()
   m = IO::read_VTK(write_text("flags-field.vtk", cells + point_data + "FIELD FieldData 2\ncovering 1 5 double\n1 1 1 1 1\n"
                                                      "fixed 1 5 int\n0 0 1 0 0\n"));
   CHECK(m.has_fixed && m.fixed == std::vector<std::size_t>({2}));
+  // no point, yet a 'fixed' scalar: the list (empty) survives a write and a read (issue 27; fuzz_vtk flags it)
+  m = IO::read_VTK(write_text("flags-no-point.vtk", "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                                                     "POINTS 0 double\nCELLS 0 0\nCELL_TYPES 0\nPOINT_DATA 0\n"
+                                                       "SCALARS fixed int 1\nLOOKUP_TABLE default\n"));
+  CHECK(m.has_fixed && m.fixed.empty() && m.map.empty());
+  IO::write_VTK(temp_path("flags-no-point-out.vtk"), m);
+  m = IO::read_VTK(temp_path("flags-no-point-out.vtk"));
+  CHECK(m.has_fixed && m.fixed.empty() && m.map.empty());
 
   CHECK_READ_ERROR(read_vtk, "flag2.vtk", flags_head + "1 0\n2 0 1\n", 21,
                    "point scalar 'fixed' of point 2 is '2'; expected 0 or 1");

@@ -14,6 +14,7 @@
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
+#include <new>
 #include <optional>
 #include <string>
 #include <stdexcept>
@@ -187,8 +188,25 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     return invalid;
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
-  Untangling_result r = untangle_as_asked<d>(in, options, protection, phantoms_used);
-  repair_locally_after<d>(in, given, options, r);
+  Untangling_result r;
+  try {
+    r = untangle_as_asked<d>(in, options, protection, phantoms_used);
+    repair_locally_after<d>(in, given, options, r);
+  } catch(const std::bad_alloc&) {
+    throw;   // the caller's to handle, as for any allocation
+  } catch(const std::exception& e) {
+    // nothing a solver throws may escape: the input is handed back as it was
+    remove_phantom_elements<d>(in);
+    in.positions = given;
+    if(phantoms_used) *phantoms_used = Phantom_elements<d>();
+    r = Untangling_result();
+    r.status = Untangling_status::NUMERICAL_FAILURE;
+    r.message = std::string("the solver stopped: ") + e.what() + "; the input map is handed back";
+    r.number_of_vertices = in.positions.size();
+    r.number_of_elements = in.elements.size();
+    r.input_returned = true;
+    return r;
+  }
   if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);

@@ -117,10 +117,11 @@ public:
       }
     } catch(const Time_is_up&) {
       stats.iterations = stats.evaluations;   // the caller's clock tells it why
-    } catch(const std::invalid_argument&) {
-      throw;                                  // a bad parameter is a bug, not a hard problem
     } catch(const std::exception&) {
-      stats.iterations = stats.evaluations;   // the line search gave up on a flat or noisy energy
+      // The line search gave up on a flat or noisy energy; the parameters
+      // were checked above, so LBFGSpp's "'step' must be positive" means a
+      // first step that underflowed (a gradient of 1e30 and more), not a bug.
+      stats.iterations = stats.evaluations;
     }
     if(std::isfinite(best_value))
       Eigen::Map<Eigen::VectorXd>(P.x.data(), P.x.size()) = best;

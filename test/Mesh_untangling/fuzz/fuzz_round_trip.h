@@ -1,0 +1,139 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What every reader's libFuzzer target does with one input: write it to a
+// file (the readers take paths), read it; when the read succeeds, write the
+// mesh back in the same format and read that: the two reads must give the
+// same bits, and writing the second read must give the same text as the
+// first write, or the target aborts (libFuzzer then saves the input).
+// Read_error is the readers' one way to reject a file; any other exception
+// escapes and libFuzzer reports it as a crash.
+#ifndef MESH_UNTANGLING_FUZZ_ROUND_TRIP_H
+#define MESH_UNTANGLING_FUZZ_ROUND_TRIP_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
+
+namespace mu_fuzz {
+
+namespace fs = std::filesystem;
+
+// One directory per process (libFuzzer's -jobs run several), removed at exit.
+inline const fs::path& scratch_directory()
+{
+  static const fs::path directory = [] {
+    fs::path d = fs::temp_directory_path() / ("mesh_untangling_fuzz_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    std::atexit([] {
+      std::error_code ec;
+      fs::remove_all(scratch_directory(), ec);
+    });
+    return d;
+  }();
+  return directory;
+}
+
+inline std::string scratch_path(const std::string& name)
+{
+  return (scratch_directory() / name).string();
+}
+
+inline std::string write_input(const std::uint8_t* data, std::size_t size, const std::string& name)
+{
+  const std::string path = scratch_path(name);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  if(!out.flush()) {
+    std::cerr << "fuzz: cannot write " << path << std::endl;
+    std::abort();
+  }
+  return path;
+}
+
+inline std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+[[noreturn]] inline void mismatch(const char* what)
+{
+  std::cerr << "fuzz: read, write, read changed " << what << std::endl;
+  std::abort();
+}
+
+// Bits, not values: -0.0 == 0.0 would hide a lost sign.
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
+                            const CGAL::Mesh_untangling::IO::Mesh_file& b)
+{
+  if(a.simplex_size != b.simplex_size) mismatch("the simplex size");
+  if(!same_bits(a.simplices, b.simplices)) mismatch("the simplices");
+  if(a.rest_dimension != b.rest_dimension) mismatch("the rest dimension");
+  if(!same_bits(a.rest, b.rest)) mismatch("the rest positions");
+  if(a.map_dimension != b.map_dimension) mismatch("the map dimension");
+  if(!same_bits(a.map, b.map)) mismatch("the map positions");
+  if(a.has_fixed != b.has_fixed) mismatch("whether fixed vertices are listed");
+  if(!same_bits(a.fixed, b.fixed)) mismatch("the fixed vertices");
+}
+
+/// `read(path)` returns a value comparable by `check(first, second)`;
+/// `write(path, value)` writes it.
+template <class Read, class Write, class Check>
+int round_trip(const std::uint8_t* data, std::size_t size, const std::string& extension,
+               const Read& read, const Write& write, const Check& check)
+{
+  const std::string input = write_input(data, size, "input" + extension);
+  decltype(read(input)) first;
+  try {
+    first = read(input);
+  } catch(const CGAL::Mesh_untangling::IO::Read_error&) {
+    return 0;
+  }
+  const std::string output = scratch_path("output" + extension);
+  write(output, first);
+  decltype(read(output)) second;
+  try {
+    second = read(output);
+  } catch(const CGAL::Mesh_untangling::IO::Read_error& e) {
+    std::cerr << "fuzz: what was written does not read back: " << e.what() << std::endl;
+    std::abort();
+  }
+  check(first, second);
+  // Writing is deterministic: the same mesh gives the same text.
+  const std::string again = scratch_path("again" + extension);
+  write(again, second);
+  if(file_text(output) != file_text(again))
+    mismatch("the written text");
+  return 0;
+}
+
+template <class Read, class Write>
+int mesh_round_trip(const std::uint8_t* data, std::size_t size, const std::string& extension,
+                    const Read& read, const Write& write)
+{
+  return round_trip(data, size, extension, read, write, check_same_mesh);
+}
+
+} // namespace mu_fuzz
+
+#endif // MESH_UNTANGLING_FUZZ_ROUND_TRIP_H
