@@ -736,10 +736,10 @@ private:
     // process shares, so that calls at once, or any thread calling rand(),
     // changed its ordering and the result's bits (issue 27; with METIS
     // behind a lock, a thread calling rand() still changed 4 of 8 runs).
-    // METIS's orderings factorize faster on large regular grids (the
-    // Newton solver's run on a 200 x 200 square took 1.4 times as long
-    // without it, a 20^3 cube 1.3 times); on the data sets CHOLMOD kept
-    // AMD's anyway.
+    // METIS's orderings factorize faster on large regular grids (AMD's
+    // need 1.9 times its flops on a 200 x 200 square, 2.0 times on a 20^3
+    // cube, whose Newton run took 1.3-1.4 times as long); on the data sets
+    // CHOLMOD kept AMD's anyway (same bits).
     c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_AMD;
     // Supernodal only where CHOLMOD's own test (flops per entry of L) finds
