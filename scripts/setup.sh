@@ -31,7 +31,14 @@ done
 # libopenblas0-serial: CHOLMOD's supernodal factorization calls BLAS, and
 # Debian's default is the reference BLAS (with OpenBLAS armadillo-598 is
 # 1.25x faster, 100 x 100 and 150 x 150 grids by Newton 1.2-1.6x); the
-# serial build, so that results stay the same bits with any number of threads.
+# serial build, so that results stay the same bits with any number of threads
+# (the pthread build with 2 threads gave armadillo-598 other bits than with 1).
+# The serial build has no locking: two threads in it at once share buffers,
+# so the Newton solver runs its BLAS calls (supernodal factorizations and
+# solves) one at a time in the process (blas_mutex in Newton_solver.h).  The
+# pthread build limited to 1 thread is safe too, but only if every
+# application sets OPENBLAS_NUM_THREADS=1; the reference BLAS (libblas3) is
+# safe but 8x slower (Newton on a 20^3 cube, AMD ordering: 67 s against 8.4 s).
 # clang, libclang-rt-dev: the libFuzzer targets (test/Mesh_untangling/fuzz,
 # ctest fuzz_*); libclang-rt-dev holds libclang_rt.fuzzer for Debian's clang.
 PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev

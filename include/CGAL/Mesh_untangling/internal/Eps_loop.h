@@ -129,7 +129,7 @@ public:
     const double flops = predicted_flops(P);
     if(!(flops > lbfgs_trial_above_flops_per_element * P.elements.size())) return false;
     if(flops <= hand_over_limit(P)) return true;                       // Newton's, but dear
-    if(flops > metis_gain_at_most * hand_over_limit(P)) return false;  // run() hands over
+    if(flops > prediction_excess_at_most * hand_over_limit(P)) return false;  // run() hands over
     return newton_solver(P) != nullptr;   // the full analysis decides whether to hand over
   }
 
@@ -290,10 +290,9 @@ private:
       const bool automatic = options_.solver == Solver::AUTOMATIC;
       const double limit = hand_over_limit(P);
       const double predicted = automatic ? predicted_flops(P) : -1;
-      // The prediction uses AMD alone; METIS, tried by the full analysis,
-      // has divided AMD's flops by up to 4 on our problems (2D grids).
-      if(predicted > metis_gain_at_most * limit) return hand_over(P, predicted);
-      newton_ = std::make_unique<Newton_solver<d>>(P, automatic ? limit : std::numeric_limits<double>::infinity());
+      // (the prediction may exceed the full analysis's count a little)
+      if(predicted > prediction_excess_at_most * limit) return hand_over(P, predicted);
+      newton_ = std::make_unique<Newton_solver<d>>(P);
       newton_problem_ = &P;
       if(automatic && newton_->factorization_flops() > limit) return hand_over(P, newton_->factorization_flops());
     }

@@ -32,15 +32,37 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
-/// What METIS has divided AMD's predicted factorization flops by, at most,
-/// on our problems (2D grids; about 1.5 on 3D grids, 1 on the data sets).
-constexpr double metis_gain_at_most = 4;
+/// How far predicted_factorization_flops may exceed the full analysis's
+/// count (test_projection checks it within 0.8 and 1.5 times).
+constexpr double prediction_excess_at_most = 1.5;
+
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+/// Held by the supernodal factorizations and solves, the only BLAS calls:
+/// Debian's serial OpenBLAS (what scripts/setup.sh installs) is built
+/// without locking, so two threads in it at once share its buffers.  Four
+/// calls at once from four threads gave other bits than each made alone in
+/// 6 of 12 runs (issue 27); the lock costs a call made alone nothing.
+inline std::mutex& blas_mutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+/// CHOLMOD's LL^T, supernodal or simplicial (see Newton_solver::analyze).
+class Cholmod_factorization : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>
+{
+public:
+  /// Whether the factorization and its solves call BLAS.
+  bool calls_blas() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_super; }
+};
+#endif
 
 /// The free vertices numbered 0, 1, ... in vertex order (-1 for a fixed vertex).
 struct Free_numbering
@@ -397,8 +419,7 @@ template <int d>
 class Newton_solver
 {
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-  // (supernodal or simplicial: see analyze)
-  using Factorization = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+  using Factorization = Cholmod_factorization;
 #else
   using Factorization = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
 #endif
@@ -412,14 +433,10 @@ class Newton_solver
 public:
   /// Builds the Hessian's pattern and its symbolic factorization, whose
   /// cost prediction (`factorization_flops`) tells the caller whether this
-  /// solver pays on the problem.  When the fill-reducing ordering of AMD
-  /// alone predicts more than `metis_gain_at_most` times `flops_limit`, the
-  /// analysis stops there: the caller will not factorize.
-  explicit Newton_solver(const Untangling_problem<d>& P,
-                         double flops_limit = std::numeric_limits<double>::infinity())
-    : pattern_(P)
+  /// solver pays on the problem.
+  explicit Newton_solver(const Untangling_problem<d>& P) : pattern_(P)
   {
-    if(pattern_.number_of_free() > 0) analyze(pattern_.matrix(), flops_limit);
+    if(pattern_.number_of_free() > 0) analyze(pattern_.matrix());
   }
 
   /// Floating-point operations of one numeric factorization, as predicted
@@ -470,7 +487,7 @@ public:
 
     for(int it = 0; it < max_iterations; ++it) {
       ++stats.iterations;
-      pairs.apply_inverse(g, q, direction, [this](const Eigen::VectorXd& r) { return factorization_->solve(r); });
+      pairs.apply_inverse(g, q, direction, [this](const Eigen::VectorXd& r) { return solve(r); });
       direction = -direction;
       const double slope = g.dot(direction);   // < 0: descent direction
       const double predicted = -slope / 2;     // the model's decrease
@@ -662,6 +679,22 @@ public:
   }
 
 private:
+  /// The BLAS lock (blas_mutex) when the factorization calls BLAS, else nothing.
+  std::unique_lock<std::mutex> lock_blas() const
+  {
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    if(factorization_->calls_blas()) return std::unique_lock<std::mutex>(blas_mutex());
+#endif
+    return {};
+  }
+
+  /// H^-1 r, H the Hessian as last factorized.
+  Eigen::VectorXd solve(const Eigen::VectorXd& r) const
+  {
+    const auto lock = lock_blas();
+    return factorization_->solve(r);   // (evaluated here, under the lock)
+  }
+
   /// The Newton step: H step = -g.
   /// Cholesky factorization of the Hessian as last assembled.
   bool factorize()
@@ -676,6 +709,7 @@ private:
     double trace = 0;
     for(std::size_t i = 0; i < diagonal.size(); ++i) trace += diagonal[i] = values[diagonal_position_[i]];
     trace /= std::max<std::size_t>(diagonal.size(), 1);
+    const auto lock = lock_blas();
     for(double shift = 1e-10; shift < 1e2; shift *= 100) {
       for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i] + shift * trace;
       factorization_->factorize(H);
@@ -686,7 +720,7 @@ private:
   }
 
   /// Symbolic analysis, once per problem.
-  void analyze(const Eigen::SparseMatrix<double>& H, double flops_limit)
+  void analyze(const Eigen::SparseMatrix<double>& H)
   {
     diagonal_position_.resize(H.cols());
     for(Eigen::Index j = 0; j < H.cols(); ++j) {
@@ -694,36 +728,34 @@ private:
       const auto* end = H.innerIndexPtr() + H.outerIndexPtr()[j + 1];
       diagonal_position_[j] = H.outerIndexPtr()[j] + (std::lower_bound(begin, end, j) - begin);
     }
-#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-    // Let CHOLMOD keep the better of AMD and METIS: by default it tries
-    // METIS only when AMD's fill looks bad, and misses e.g. 2D grids.  METIS
-    // costs several times AMD's time (3.4 s against 0.8 s on a million
-    // tetrahedra) and cannot bring AMD's flops under the caller's limit when
-    // they exceed it metis_gain_at_most times.
-    for(int methods : {1, 2}) {
-      factorization_ = std::make_unique<Factorization>();
-      cholmod_common& c = factorization_->cholmod();
-      c.nmethods = methods;
-      c.method[0].ordering = CHOLMOD_AMD;
-      c.method[1].ordering = CHOLMOD_METIS;
-      // Supernodal only where CHOLMOD's own test (flops per entry of L) finds
-      // dense enough blocks: on the data sets' Hessians (a few thousand
-      // unknowns) the simplicial LL^T is twice as fast, without BLAS calls or
-      // OpenMP threads waking up; LL^T (not LDL^T) so that an indefinite
-      // matrix is reported as such.
-      c.supernodal = CHOLMOD_AUTO;
-      c.final_ll = 1;
-      // An indefinite matrix is expected (factorize() then shifts it), and
-      // reported through info(): without this CHOLMOD prints a warning on
-      // stdout for each such factorization, hundreds on a hard problem.
-      c.print = 0;
-      factorization_->analyzePattern(H);
-      factorization_flops_ = c.fl;
-      if(factorization_flops_ > metis_gain_at_most * flops_limit) break;
-    }
-#else
-    (void)flops_limit;
     factorization_ = std::make_unique<Factorization>();
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    cholmod_common& c = factorization_->cholmod();
+    // AMD alone, never METIS (CHOLMOD's default tries it when AMD's fill
+    // looks bad): METIS draws on the C library's rand(), which the whole
+    // process shares, so that calls at once, or any thread calling rand(),
+    // changed its ordering and the result's bits (issue 27; with METIS
+    // behind a lock, a thread calling rand() still changed 4 of 8 runs).
+    // METIS's orderings factorize faster on large regular grids (AMD's
+    // need 1.9 times its flops on a 200 x 200 square, 2.0 times on a 20^3
+    // cube, whose Newton run took 1.3-1.4 times as long); on the data sets
+    // CHOLMOD kept AMD's anyway (same bits).
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_AMD;
+    // Supernodal only where CHOLMOD's own test (flops per entry of L) finds
+    // dense enough blocks: on the data sets' Hessians (a few thousand
+    // unknowns) the simplicial LL^T is twice as fast, without BLAS calls or
+    // OpenMP threads waking up; LL^T (not LDL^T) so that an indefinite
+    // matrix is reported as such.
+    c.supernodal = CHOLMOD_AUTO;
+    c.final_ll = 1;
+    // An indefinite matrix is expected (factorize() then shifts it), and
+    // reported through info(): without this CHOLMOD prints a warning on
+    // stdout for each such factorization, hundreds on a hard problem.
+    c.print = 0;
+    factorization_->analyzePattern(H);
+    factorization_flops_ = c.fl;
+#else
     factorization_->analyzePattern(H);
 #endif
   }
