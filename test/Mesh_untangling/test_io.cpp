@@ -567,6 +567,9 @@ void test_format_details()
   // An empty OBJ file is rejected like every other empty file.
   CHECK_READ_ERROR(read_obj, "empty.obj", "", 1, "truncated: no OBJ statement");
   CHECK_READ_ERROR(read_obj, "comments.obj", "# nothing\n\n# here\n", 3, "truncated: no OBJ statement");
+  // nor is one of statements that hold no mesh (fuzz_obj: it was written back as an empty file)
+  CHECK_READ_ERROR(read_obj, "library.obj", "# comment\nmtllib x.m\ng group\n", 3, "truncated: no vertex (v)");
+  CHECK_READ_ERROR(read_obj, "textures.obj", "vt 0 1\nvt 1 1\n", 2, "truncated: no vertex (v)");
 
   // A long line is counted, not stored: the message gives its length.
   std::string long_line;

@@ -127,8 +127,10 @@ inline OBJ_content read_OBJ_content(Text_file& file)
 {
   OBJ_content content;
   std::vector<Token> tokens;
-  // Like every other format, an OBJ file must hold something: an empty one
-  // is more likely a failed export than a mesh without vertices.
+  // Like every other format, an OBJ file must hold a mesh: an empty one (or
+  // one of comments, groups and material libraries only) is more likely a
+  // failed export than a mesh without vertices, and it would be written
+  // back as an empty file.
   if(!file.next_line(tokens))
     file.fail_truncated("no OBJ statement");
   do {
@@ -142,6 +144,8 @@ inline OBJ_content read_OBJ_content(Text_file& file)
     else if(!is_ignored_OBJ_statement(keyword))
       file.fail(tokens[0].line, "unsupported OBJ statement " + quote_token(keyword));
   } while(file.next_line(tokens));
+  if(content.positions.empty())
+    file.fail_truncated("no vertex (v)");
   return content;
 }
 
