@@ -39,7 +39,7 @@ inline std::string to_string(Untangling_status status)
     case Untangling_status::NUMERICAL_FAILURE: return "the energy stopped being finite and could not be recovered";
     case Untangling_status::INVALID_INPUT: return "invalid input";
     case Untangling_status::UNREPAIRABLE_DEFECTS_LEFT:
-      return "inverted elements whose vertices are all fixed are left: nothing can repair them";
+      return "inverted elements or over-wound stars whose vertices are all fixed are left: nothing can repair them";
   }
   return "unknown status";
 }
