@@ -117,6 +117,7 @@ std::string short_status(MU::Untangling_status status)
     case MU::Untangling_status::STOPPED_BY_CALLBACK: return "stopped by callback";
     case MU::Untangling_status::NUMERICAL_FAILURE: return "numerical failure";
     case MU::Untangling_status::INVALID_INPUT: return "invalid input";
+    case MU::Untangling_status::UNREPAIRABLE_DEFECTS_LEFT: return "input defects left";
   }
   return "unknown status";
 }
