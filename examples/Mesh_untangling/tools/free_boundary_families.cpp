@@ -95,24 +95,11 @@ Mesh_file make_box_grid(std::size_t nx, std::size_t ny, std::size_t nz, const Ke
     }
     return slot;
   };
-  static const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   for(std::size_t k = 0; k < nz; ++k)
     for(std::size_t j = 0; j < ny; ++j)
-      for(std::size_t i = 0; i < nx; ++i) {
-        if(!keep(i, j, k)) continue;
-        for(const auto& path : paths) {
-          std::size_t c[3] = {i, j, k};
-          std::array<std::size_t, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) {
-            ++c[path[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          const bool odd = (path[0] == 0 && path[1] == 2) || (path[0] == 1 && path[1] == 0) || (path[0] == 2 && path[1] == 1);
-          if(odd) std::swap(t[2], t[3]);
-          m.simplices.push_back(t);
-        }
-      }
+      for(std::size_t i = 0; i < nx; ++i)
+        if(keep(i, j, k))
+          for(const auto& t : kuhn_cell(i, j, k, id)) m.simplices.push_back(t);
   m.map = m.rest;
   return m;
 }

@@ -44,6 +44,30 @@ inline Mesh_file make_square_grid(std::size_t n)
   return m;
 }
 
+/// The six tetrahedra of the Kuhn subdivision of grid cell (i, j, k), the
+/// paths from its corner 000 to 111, all positively oriented; `id(i, j, k)`
+/// numbers the grid's vertices.
+template <class Id>
+std::array<std::array<std::size_t, 4>, 6> kuhn_cell(std::size_t i, std::size_t j, std::size_t k, const Id& id)
+{
+  static const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::array<std::array<std::size_t, 4>, 6> tets;
+  for(int p = 0; p < 6; ++p) {
+    std::size_t c[3] = {i, j, k};
+    std::array<std::size_t, 4>& t = tets[p];
+    t[0] = id(c[0], c[1], c[2]);
+    for(int s = 0; s < 3; ++s) {
+      ++c[paths[p][s]];
+      t[s + 1] = id(c[0], c[1], c[2]);
+    }
+    // odd permutations of the axes give negative tets: swap to keep all positive
+    const int* path = paths[p];
+    const bool odd = (path[0] == 0 && path[1] == 2) || (path[0] == 1 && path[1] == 0) || (path[0] == 2 && path[1] == 1);
+    if(odd) std::swap(t[2], t[3]);
+  }
+  return tets;
+}
+
 /// (n+1)^3 vertices on [0,1]^3, 6 n^3 positive tetrahedra (Kuhn subdivision); rest = map.
 inline Mesh_file make_cube_grid(std::size_t n)
 {
@@ -55,24 +79,10 @@ inline Mesh_file make_cube_grid(std::size_t n)
     for(std::size_t j = 0; j <= n; ++j)
       for(std::size_t i = 0; i <= n; ++i)
         m.rest.push_back({double(i) / n, double(j) / n, double(k) / n});
-  // The six tets of the Kuhn subdivision: paths from corner 000 to 111.
-  static const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   for(std::size_t k = 0; k < n; ++k)
     for(std::size_t j = 0; j < n; ++j)
       for(std::size_t i = 0; i < n; ++i)
-        for(const auto& path : paths) {
-          std::size_t c[3] = {i, j, k};
-          std::array<std::size_t, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s) {
-            ++c[path[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          // odd permutations of the axes give negative tets: swap to keep all positive
-          const bool odd = (path[0] == 0 && path[1] == 2) || (path[0] == 1 && path[1] == 0) || (path[0] == 2 && path[1] == 1);
-          if(odd) std::swap(t[2], t[3]);
-          m.simplices.push_back(t);
-        }
+        for(const auto& t : kuhn_cell(i, j, k, id)) m.simplices.push_back(t);
   m.map = m.rest;
   return m;
 }
