@@ -117,6 +117,8 @@ public:
       }
     } catch(const Time_is_up&) {
       stats.iterations = stats.evaluations;   // the caller's clock tells it why
+    } catch(const std::bad_alloc&) {
+      throw;   // not the line search's doing: the caller reports it
     } catch(const std::exception&) {
       // The line search gave up on a flat or noisy energy; the parameters
       // were checked above, so LBFGSpp's "'step' must be positive" means a

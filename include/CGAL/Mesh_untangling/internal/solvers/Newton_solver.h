@@ -24,6 +24,8 @@
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #endif
 
 #include <algorithm>
@@ -33,6 +35,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <vector>
 
 namespace CGAL {
@@ -55,12 +58,56 @@ inline std::mutex& blas_mutex()
   return mutex;
 }
 
+/// Whether BLAS has taken its work buffer in this process (set by the
+/// first factorization that called it; read and set under blas_mutex).
+inline bool& blas_buffer_taken()
+{
+  static bool taken = false;
+  return taken;
+}
+
+/// Whether a factorization that calls BLAS for the first time in this
+/// process, and that allocates `factor_bytes` before that call, has the room
+/// it needs.  OpenBLAS maps a 128 MiB work buffer at its first call, and
+/// when the address space is capped (ulimit -v) below that, it waits for one
+/// forever instead of failing: a Newton run under a 400 MB cap spun in
+/// blas_memory_alloc (issue 27).  So, under a cap, the room is tried first
+/// (mapped and unmapped, never touched).  Called under blas_mutex.
+inline bool blas_has_room(std::size_t factor_bytes)
+{
+  if(blas_buffer_taken()) return true;
+  rlimit cap;
+  if(getrlimit(RLIMIT_AS, &cap) != 0 || cap.rlim_cur == RLIM_INFINITY) return true;
+  const std::size_t room = (std::size_t(160) << 20) + factor_bytes;   // 128 MiB, OpenBLAS's margins, the factor
+  void* probe = mmap(nullptr, room, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if(probe == MAP_FAILED) return false;
+  munmap(probe, room);
+  return true;
+}
+
 /// CHOLMOD's LL^T, supernodal or simplicial (see Newton_solver::analyze).
 class Cholmod_factorization : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>
 {
 public:
   /// Whether the factorization and its solves call BLAS.
   bool calls_blas() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_super; }
+
+  /// What the numeric factorization allocates: the factor's values and
+  /// CHOLMOD's work space (bounded by as much again).
+  std::size_t factor_bytes() const
+  {
+    return m_cholmodFactor == nullptr ? 0 : 2 * sizeof(double) * m_cholmodFactor->xsize;
+  }
+
+  /// Throws std::bad_alloc when CHOLMOD's last call ran out of memory: it
+  /// reports that through its status only, and Eigen's wrapper then hands
+  /// back an empty solution, which the solver took for a converged step
+  /// (under a 200 MB cap, a Newton run made 116 steps that moved nothing and
+  /// ended "after the iteration budget" instead of "out of memory").
+  void throw_if_out_of_memory()
+  {
+    if(cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+  }
 };
 #endif
 
@@ -692,7 +739,12 @@ private:
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const
   {
     const auto lock = lock_blas();
-    return factorization_->solve(r);   // (evaluated here, under the lock)
+    Eigen::VectorXd x = factorization_->solve(r);   // (evaluated here, under the lock)
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    factorization_->throw_if_out_of_memory();
+#endif
+    if(factorization_->info() != Eigen::Success) x.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return x;
   }
 
   /// The Newton step: H step = -g.
@@ -710,10 +762,18 @@ private:
     for(std::size_t i = 0; i < diagonal.size(); ++i) trace += diagonal[i] = values[diagonal_position_[i]];
     trace /= std::max<std::size_t>(diagonal.size(), 1);
     const auto lock = lock_blas();
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+    const bool calls_blas = factorization_->calls_blas();
+    if(calls_blas && !blas_has_room(factorization_->factor_bytes())) throw std::bad_alloc();
+#endif
     for(double shift = 1e-10; shift < 1e2; shift *= 100) {
       for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i] + shift * trace;
       factorization_->factorize(H);
       for(std::size_t i = 0; i < diagonal.size(); ++i) values[diagonal_position_[i]] = diagonal[i];
+#ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
+      factorization_->throw_if_out_of_memory();
+      if(calls_blas) blas_buffer_taken() = true;
+#endif
       if(factorization_->info() == Eigen::Success) return true;
     }
     return false;
@@ -754,6 +814,7 @@ private:
     // stdout for each such factorization, hundreds on a hard problem.
     c.print = 0;
     factorization_->analyzePattern(H);
+    factorization_->throw_if_out_of_memory();
     factorization_flops_ = c.fl;
 #else
     factorization_->analyzePattern(H);
