@@ -200,5 +200,25 @@ echo 0 >> fewer.input
 sed -i "$(( line - 1 ))s/.*/1\\t3/" fewer.input
 fails rest_element_count "fewer\\.input: 1 elements \\(triangles\\), but small\\.input has 288" small.input --rest fewer.input -o x.input
 
+# Under an address-space cap, Newton's factorization ends "out of memory"
+# (exit 2, nothing written) instead of spinning in OpenBLAS's allocator
+# (400 MB) or making steps that move nothing and blaming the iteration
+# budget (200-300 MB).  Not under the sanitizers, whose shadow memory
+# needs terabytes of address space, and only where CHOLMOD factorizes.
+if [ "${MU_WITH_CHOLMOD:-0}" = 1 ] && ! ldd "$UNTANGLE" | grep -q 'libasan'; then
+  "$MAKE" cube 20 1.2 1 cube20.vtk > /dev/null || exit 2
+  for cap in 300000 450000; do
+    ( ulimit -v $cap; exec timeout 120 "$UNTANGLE" --solver newton cube20.vtk --rest cube20-rest.vtk \
+        -o capped.vtk --report capped.json -q ) > "cap_$cap.out" 2> "cap_$cap.err"
+    echo $? > "cap_$cap.rc"
+    check "memory cap $cap kB: exit 2 (not a time-out, 124)" rc_is "cap_$cap" 2
+    check "memory cap $cap kB: says out of memory" err_has "cap_$cap" "error: out of memory"
+    check "memory cap $cap kB: nothing written" test ! -e capped.vtk -a ! -e capped.json
+    check "memory cap $cap kB: no temporary left" no_temporaries
+  done
+else
+  echo "SKIPPED: memory caps (sanitizers, or no CHOLMOD)"
+fi
+
 echo "$checks checks, $failures failed"
 [ "$failures" = 0 ]

@@ -36,6 +36,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <thread>
 #include <vector>
 
 namespace CGAL {
@@ -72,13 +73,19 @@ inline bool& blas_buffer_taken()
 /// when the address space is capped (ulimit -v) below that, it waits for one
 /// forever instead of failing: a Newton run under a 400 MB cap spun in
 /// blas_memory_alloc (issue 27).  So, under a cap, the room is tried first
-/// (mapped and unmapped, never touched).  Called under blas_mutex.
+/// (mapped and unmapped, never touched): the buffer, the factor, and for
+/// each hardware thread the stack and heap of the OpenMP worker that CHOLMOD
+/// starts (on a 2-core machine the run on a 20^3 cube needed 290 to 300 MiB
+/// beyond what it held before, its factor being 111 MiB).  Called under
+/// blas_mutex.
 inline bool blas_has_room(std::size_t factor_bytes)
 {
   if(blas_buffer_taken()) return true;
   rlimit cap;
   if(getrlimit(RLIMIT_AS, &cap) != 0 || cap.rlim_cur == RLIM_INFINITY) return true;
-  const std::size_t room = (std::size_t(160) << 20) + factor_bytes;   // 128 MiB, OpenBLAS's margins, the factor
+  constexpr std::size_t MiB = std::size_t(1) << 20;
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t room = 128 * MiB + factor_bytes + 32 * MiB * threads;
   void* probe = mmap(nullptr, room, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
   if(probe == MAP_FAILED) return false;
   munmap(probe, room);
@@ -92,11 +99,11 @@ public:
   /// Whether the factorization and its solves call BLAS.
   bool calls_blas() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_super; }
 
-  /// What the numeric factorization allocates: the factor's values and
-  /// CHOLMOD's work space (bounded by as much again).
+  /// What the numeric factorization allocates before it calls BLAS: the
+  /// factor's values (CHOLMOD's work space is much smaller).
   std::size_t factor_bytes() const
   {
-    return m_cholmodFactor == nullptr ? 0 : 2 * sizeof(double) * m_cholmodFactor->xsize;
+    return m_cholmodFactor == nullptr ? 0 : sizeof(double) * m_cholmodFactor->xsize;
   }
 
   /// Throws std::bad_alloc when CHOLMOD's last call ran out of memory: it
