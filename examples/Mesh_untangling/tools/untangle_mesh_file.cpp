@@ -5,6 +5,7 @@
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Mesh_untangling/target_orientations.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/untangle_mesh.h>
 
@@ -58,17 +59,6 @@ void check_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
                           std::to_string(mesh.map.size()));
 }
 
-/// The map and its elements in the solver's form, without targets.
-template <int d>
-MU::internal::Untangling_input<d> map_only(const Mesh_file& mesh)
-{
-  MU::internal::Untangling_input<d> in;
-  in.positions.reserve(mesh.map.size());
-  for(const auto& p : mesh.map) in.positions.push_back(MU::internal::to_vector<d>(p));
-  in.elements = simplices_of<d>(mesh);
-  return in;
-}
-
 using Kernel = CGAL::Simple_cartesian<double>;
 
 template <int d>
@@ -90,7 +80,7 @@ std::vector<Point<d>> cgal_points(const std::vector<Coordinates>& points)
 /// rest points of `mesh` (3D rest triangles are laid flat by the package),
 /// or none (regular targets).
 template <int d, typename Untangle>
-Untangling_result with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
+auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
 {
   if(mesh.rest.empty()) return untangle(CGAL::parameters::default_values());
   if constexpr(d == 2) {
@@ -357,22 +347,14 @@ void add_phantom_overlay(Svg_map& map, const Run_record& record)
 
 std::vector<int> reference_orientations(const Mesh_file& mesh)
 {
-  std::vector<int> orientation(mesh.simplices.size(), 1);
-  if(mesh.rest.empty()) {
-    // regular targets take the orientation of most of the map, as in the untangler
-    const int sign = mesh.simplex_size == 3 ? MU::internal::map_volume_sign<2>(map_only<2>(mesh))
-                                            : MU::internal::map_volume_sign<3>(map_only<3>(mesh));
-    return std::vector<int>(mesh.simplices.size(), sign);
-  }
-  if(mesh.simplex_size == 3 && mesh.rest_dimension == 3) return orientation;
-  // Same rule as the untangler: the sign of each rest simplex, flat ones take the majority's.
-  const auto signs = mesh.simplex_size == 3 ? MU::simplex_orientations<2>(points_of<2>(mesh.rest), simplices_of<2>(mesh))
-                                            : MU::simplex_orientations<3>(points_of<3>(mesh.rest), simplices_of<3>(mesh));
-  long majority = 0;
-  for(int s : signs) majority += s;
-  for(std::size_t k = 0; k < signs.size(); ++k)
-    orientation[k] = signs[k] != 0 ? signs[k] : (majority < 0 ? -1 : 1);
-  return orientation;
+  const auto orientations = [&mesh](auto dimension) {
+    constexpr int d = decltype(dimension)::value;
+    const auto points = cgal_points<d>(mesh.map);
+    const auto simplices = simplices_of<d>(mesh);
+    return with_rest_points<d>(mesh, [&](const auto& rest) { return MU::target_orientations(points, simplices, rest); });
+  };
+  return mesh.simplex_size == 3 ? orientations(std::integral_constant<int, 2>())
+                                : orientations(std::integral_constant<int, 3>());
 }
 
 std::vector<bool> boundary_vertices(const Mesh_file& mesh)

@@ -470,6 +470,18 @@ oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untan
   return targets;
 }
 
+/// The orientation (+1 or -1) of every element's target, as the solver
+/// takes it (oriented_targets), and the number of degenerate targets replaced.
+template <int d>
+std::vector<int> target_orientations(const Untangling_input<d>& in, std::size_t* degenerate_replaced = nullptr)
+{
+  Untangling_problem<d> P;
+  std::vector<double> scratch;
+  oriented_targets<d>(in, default_degenerate_quality, P, scratch);
+  if(degenerate_replaced) *degenerate_replaced = P.degenerate_targets_replaced;
+  return std::move(P.reference_orientation);
+}
+
 /// The factor from the targets' units to the normalized map's: AS_GIVEN
 /// keeps the map's units; MATCH_MAP_VOLUME makes the mesh's targets as
 /// large, in all, as the map's signed volume (its absolute volume when the

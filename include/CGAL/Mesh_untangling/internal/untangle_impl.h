@@ -132,15 +132,14 @@ template <int d>
 void validate_stars(const Untangling_input<d>& in)
 {
   validate_manifold_facets<d>(in);
-  Untangling_problem<d> orientation;
-  std::vector<double> scratch;
-  oriented_targets<d>(in, default_degenerate_quality, orientation, scratch);
-  if(!in.targets.empty() && orientation.degenerate_targets_replaced == in.number_of_mesh_elements())
+  std::size_t degenerate = 0;
+  const std::vector<int> orientation = target_orientations<d>(in, &degenerate);
+  if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
   std::vector<bool> is_fixed(in.is_fixed.begin(), in.is_fixed.end());
   is_fixed.resize(in.number_of_mesh_vertices(), false);
-  const Invertibility_report report = check_mesh<d>(in, orientation.reference_orientation, is_fixed);
+  const Invertibility_report report = check_mesh<d>(in, orientation, is_fixed);
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
                                 " is not a disk or a half-disk (its elements meet there only at the vertex, or "
