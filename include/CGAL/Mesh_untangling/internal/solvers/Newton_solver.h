@@ -517,20 +517,11 @@ public:
     Inner_statistics stats;
     const int N = d * pattern_.number_of_free();
     if(N == 0) { stats.converged = true; return stats; }
-    std::vector<double> trial(P.x.size()), further(P.x.size()), vertex_direction(P.x.size());
-    Eigen::VectorXd g(N), g_trial(N), direction(N), q(N);
-    // the step direction per vertex (zero on fixed ones), set at each step
-    auto move = [&](double alpha, std::vector<double>& to) {
-      to.resize(P.x.size());
-      for(std::size_t i = 0; i < P.x.size(); ++i) to[i] = P.x[i] + alpha * vertex_direction[i];
-    };
-    // Elements with det J <= 0 at P.x and at the trial point, as the last
-    // energy evaluation there counted them: the step bound is only sought
-    // from a valid map, where it exists.
-    std::size_t non_positive = 0, non_positive_at_trial = 0;
-    auto energy_and_gradient = [&](const std::vector<double>& x, Eigen::VectorXd& free_gradient, std::size_t& tangled) {
-      return energy_and_free_gradient(P, x.data(), eps, theta, free_gradient, &tangled);
-    };
+    Step_workspace w(P.x.size(), N);
+    Eigen::VectorXd g(N), direction(N), q(N);
+    // Elements with det J <= 0 at P.x, as the last energy evaluation there
+    // counted them: the step bound is only sought from a valid map, where it exists.
+    std::size_t non_positive = 0;
     Quasi_newton_pairs pairs;
 
     double E = assemble(P, eps, theta, g, &non_positive);
@@ -563,58 +554,22 @@ public:
         continue;
       }
 
-      // Armijo backtracking on F(., eps), finite everywhere for eps > 0.  The
-      // first trial is nearly always accepted, and the next step needs the
-      // gradient there: the first trial computes both at once.  Shorter
-      // trials compute the energy alone.
-      //
-      // From a valid map the first trial stops short (step_fraction) of where
-      // the first element turns over.  Near the barrier (eps tiny: the last
-      // stages of the CuboidBlocks) the full step would turn some over on most
-      // steps, and halving back from there cost 4.4 energy passes
-      // per step, two thirds of all passes (i02c: 3,715 passes, now 971).
       const bool refresh = ++since_factorization >= steps_per_factorization && !last;
-      for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
-        const int f = pattern_.free_index(v);
-        for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
-      }
-      const double bound = non_positive == 0 ? step_keeping_orientation(P, P.x.data(), vertex_direction.data(), 1.)
-                                             : std::numeric_limits<double>::infinity();
-      double alpha = std::min(1., step_fraction * bound), E_trial = E;
-      bool accepted = false, derivatives_at_trial = false;
-      for(int ls = 0; ls < 40 && !accepted; ++ls) {
-        if(ls > 0) alpha /= 2;
-        move(alpha, trial);
-        derivatives_at_trial = ls == 0 && !last;
-        E_trial = derivatives_at_trial ? energy_and_gradient(trial, g_trial, non_positive_at_trial)
-                                       : energy<d>(P, trial.data(), eps, theta);
-        ++stats.evaluations;
-        accepted = std::isfinite(E_trial) && E_trial <= E + 1e-4 * alpha * slope;
-      }
-      if(!accepted) { stats.converged = last; break; }
-
-      // A full step that gained more than the model promised says that the
-      // model is too curved along it (projected element Hessians are, most
-      // near the barrier): go further along the same direction while the
-      // energy keeps decreasing.
-      if(derivatives_at_trial && E - E_trial > 1.2 * predicted)   // (never on the last step)
-        for(int k = 0; k < max_extrapolations && 2 * alpha < step_fraction * bound; ++k) {
-          move(2 * alpha, further);
-          const double E_further = energy<d>(P, further.data(), eps, theta);
-          ++stats.evaluations;
-          if(!(E_further < E_trial)) break;
-          alpha *= 2;
-          E_trial = E_further;
-          trial.swap(further);
-          derivatives_at_trial = false;
-        }
-      P.x.swap(trial);
+      scatter_to_vertices(direction, P.number_of_vertices, w.vertex_direction);
+      const double bound = non_positive == 0
+                             ? step_keeping_orientation(P, P.x.data(), w.vertex_direction.data(), 1.)
+                             : std::numeric_limits<double>::infinity();
+      Trial t = backtrack(P, eps, theta, E, slope, std::min(1., step_fraction * bound), last, w, stats);
+      if(!t.accepted) { stats.converged = last; break; }
+      if(t.derivatives_at_trial && E - t.energy > 1.2 * predicted)   // (never on the last step)
+        extrapolate(P, eps, theta, bound, w, t, stats);
+      P.x.swap(w.trial);
       if(last) { stats.converged = true; break; }
-      const double decrease = E - E_trial;
-      if(!derivatives_at_trial) {
-        E_trial = energy_and_gradient(P.x, g_trial, non_positive_at_trial);
+      const double decrease = E - t.energy;
+      if(!t.derivatives_at_trial) {
+        t.energy = energy_and_free_gradient(P, P.x.data(), eps, theta, w.g_trial, &w.non_positive_at_trial);
         ++stats.evaluations;
-        if(!std::isfinite(E_trial)) { stats.finite = false; break; }
+        if(!std::isfinite(t.energy)) { stats.finite = false; break; }
       }
       if(refresh) {
         update_hessian(P, eps, theta);
@@ -622,11 +577,11 @@ public:
         pairs.clear();   // they corrected the previous factorization
         since_factorization = 0;
       } else {
-        pairs.add(alpha * direction, g_trial - g);
+        pairs.add(t.alpha * direction, w.g_trial - g);
       }
-      E = E_trial;
-      non_positive = non_positive_at_trial;
-      g.swap(g_trial);
+      E = t.energy;
+      non_positive = w.non_positive_at_trial;
+      g.swap(w.g_trial);
       if(decrease <= 1e-9 * std::abs(E)) { stats.converged = true; break; }
     }
     return stats;
@@ -733,6 +688,92 @@ public:
   }
 
 private:
+  /// The points that a step tries, and what was computed there.
+  struct Step_workspace
+  {
+    std::vector<double> trial, further, vertex_direction;   // per vertex coordinate
+    Eigen::VectorXd g_trial;                                // the gradient at trial (free unknowns)
+    std::size_t non_positive_at_trial = 0;                  // elements with det J <= 0 there
+
+    Step_workspace(std::size_t coordinates, int free_unknowns)
+      : trial(coordinates), further(coordinates), vertex_direction(coordinates), g_trial(free_unknowns)
+    {}
+  };
+
+  /// A step length that a line search settled on, and the energy there.
+  struct Trial
+  {
+    double alpha = 0, energy = 0;
+    bool accepted = false;
+    bool derivatives_at_trial = false;   // Step_workspace::g_trial holds the gradient at the trial point
+  };
+
+  /// The step direction of the free unknowns, per vertex (zero on fixed ones).
+  void scatter_to_vertices(const Eigen::VectorXd& direction, std::size_t number_of_vertices,
+                           std::vector<double>& vertex_direction) const
+  {
+    for(std::size_t v = 0; v < number_of_vertices; ++v) {
+      const int f = pattern_.free_index(v);
+      for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
+    }
+  }
+
+  /// x + alpha * direction, into `to`.
+  static void move(const std::vector<double>& x, const std::vector<double>& direction, double alpha,
+                   std::vector<double>& to)
+  {
+    to.resize(x.size());
+    for(std::size_t i = 0; i < x.size(); ++i) to[i] = x[i] + alpha * direction[i];
+  }
+
+  /// Armijo backtracking on F(., eps), finite everywhere for eps > 0, from
+  /// the step `alpha`.  The first trial is nearly always accepted, and the
+  /// next step needs the gradient there: the first trial computes both at
+  /// once.  Shorter trials compute the energy alone.
+  ///
+  /// From a valid map the first trial stops short (step_fraction) of where
+  /// the first element turns over.  Near the barrier (eps tiny: the last
+  /// stages of the CuboidBlocks) the full step would turn some over on most
+  /// steps, and halving back from there cost 4.4 energy passes per step, two
+  /// thirds of all passes (i02c: 3,715 passes, now 971).
+  Trial backtrack(const Untangling_problem<d>& P, double eps, double theta, double E, double slope, double alpha,
+                  bool last, Step_workspace& w, Inner_statistics& stats)
+  {
+    Trial t;
+    t.alpha = alpha;
+    t.energy = E;
+    for(int ls = 0; ls < 40 && !t.accepted; ++ls) {
+      if(ls > 0) t.alpha /= 2;
+      move(P.x, w.vertex_direction, t.alpha, w.trial);
+      t.derivatives_at_trial = ls == 0 && !last;
+      t.energy = t.derivatives_at_trial
+                   ? energy_and_free_gradient(P, w.trial.data(), eps, theta, w.g_trial, &w.non_positive_at_trial)
+                   : energy<d>(P, w.trial.data(), eps, theta);
+      ++stats.evaluations;
+      t.accepted = std::isfinite(t.energy) && t.energy <= E + 1e-4 * t.alpha * slope;
+    }
+    return t;
+  }
+
+  /// A full step that gained more than the model promised says that the
+  /// model is too curved along it (projected element Hessians are, most
+  /// near the barrier): go further along the same direction while the
+  /// energy keeps decreasing, short of where an element turns over (`bound`).
+  void extrapolate(const Untangling_problem<d>& P, double eps, double theta, double bound, Step_workspace& w,
+                   Trial& t, Inner_statistics& stats)
+  {
+    for(int k = 0; k < max_extrapolations && 2 * t.alpha < step_fraction * bound; ++k) {
+      move(P.x, w.vertex_direction, 2 * t.alpha, w.further);
+      const double E_further = energy<d>(P, w.further.data(), eps, theta);
+      ++stats.evaluations;
+      if(!(E_further < t.energy)) break;
+      t.alpha *= 2;
+      t.energy = E_further;
+      w.trial.swap(w.further);
+      t.derivatives_at_trial = false;
+    }
+  }
+
   /// The BLAS lock (blas_mutex) when the factorization calls BLAS, else nothing.
   std::unique_lock<std::mutex> lock_blas() const
   {
