@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "svg_writer.h"
 
+#include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
@@ -95,24 +96,18 @@ void check(const Svg_map& map)
                     std::to_string(n));
 }
 
-/// tr(JᵀJ) / (2 det J) for the affine map from `target` onto the triangle at
-/// `p`: 1 for a similarity, growing with the anisotropy; NaN where det J <= 0
-/// or the target is flat (no shape to compare with).
+/// The package's shape distortion (Element_figures) of the affine map from
+/// `target` onto the triangle at `p`: 1 for a similarity, growing with the
+/// anisotropy; NaN where det J <= 0 or the target is flat (no shape to
+/// compare with).
 double shape_distortion(const std::array<Point, 3>& target, const std::array<Point, 3>& p)
 {
-  const double r00 = target[1][0] - target[0][0], r01 = target[2][0] - target[0][0];
-  const double r10 = target[1][1] - target[0][1], r11 = target[2][1] - target[0][1];
-  const double det_r = r00 * r11 - r01 * r10;
-  const double p00 = p[1][0] - p[0][0], p01 = p[2][0] - p[0][0];
-  const double p10 = p[1][1] - p[0][1], p11 = p[2][1] - p[0][1];
-  if(det_r == 0) return std::numeric_limits<double>::quiet_NaN();
-  // J = P R^-1
-  const double i00 = r11 / det_r, i01 = -r01 / det_r, i10 = -r10 / det_r, i11 = r00 / det_r;
-  const double j00 = p00 * i00 + p01 * i10, j01 = p00 * i01 + p01 * i11;
-  const double j10 = p10 * i00 + p11 * i10, j11 = p10 * i01 + p11 * i11;
-  const double det_j = j00 * j11 - j01 * j10;
-  if(!(det_j > 0)) return std::numeric_limits<double>::quiet_NaN();
-  return (j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11) / (2 * det_j);
+  Eigen::Matrix2d R, P;
+  R << target[1][0] - target[0][0], target[2][0] - target[0][0], target[1][1] - target[0][1], target[2][1] - target[0][1];
+  P << p[1][0] - p[0][0], p[2][0] - p[0][0], p[1][1] - p[0][1], p[2][1] - p[0][1];
+  if(R.determinant() == 0) return std::numeric_limits<double>::quiet_NaN();
+  const MU::Element_figures f = MU::figures_of_jacobian<2>(P * R.inverse());
+  return f.det_J > 0 ? f.shape_distortion : std::numeric_limits<double>::quiet_NaN();
 }
 
 std::vector<double> distortions(const Svg_map& map)
@@ -233,73 +228,60 @@ void legend(std::ostream& out, double left, double top, bool computed_distortion
   out << "</g>\n";
 }
 
-} // namespace
-
-Svg_counts write_svg(const std::string& path, const Svg_map& map)
+/// What the picture marks, found by the package's checks.
+struct Marks
 {
-  check(map);   // before the file is created
-  CGAL::Mesh_untangling::IO::internal::Atomic_output_file file(path);
-  const Svg_counts counts = write_svg(file.stream(), map);
-  file.commit();
-  return counts;
-}
+  std::vector<char> inverted;   // per triangle
+  MU::Invertibility_report local;
+  std::vector<double> covering;   // per vertex
+  MU::Boundary_self_intersection_report<2> boundary;
+};
 
-Svg_counts write_svg(std::ostream& out, const Svg_map& map)
+Marks find_marks(const Svg_map& map, Svg_counts& counts)
 {
-  check(map);
-  Svg_counts counts;
-  counts.triangles = map.triangles.size();
-  counts.overlay = map.overlay.size();
-
-  std::vector<char> inverted(map.triangles.size());
+  Marks m;
+  m.inverted.resize(map.triangles.size());
   for(std::size_t k = 0; k < map.triangles.size(); ++k) {
     const int reference = map.reference_orientation.empty() ? 1 : map.reference_orientation[k];
-    inverted[k] = MU::simplex_orientation<2>(map.positions, map.triangles[k]) * reference <= 0;
-    counts.inverted += inverted[k];
+    m.inverted[k] = MU::simplex_orientation<2>(map.positions, map.triangles[k]) * reference <= 0;
+    counts.inverted += m.inverted[k];
   }
-  const std::vector<double> distortion = distortions(map);
-  const MU::Invertibility_report local =
-    MU::check_local_invertibility<2>(map.positions, map.triangles, map.reference_orientation, map.is_fixed);
-  const std::vector<double> covering =
-    MU::vertex_covering_numbers_2(map.positions, map.triangles, map.reference_orientation);
-  counts.overwound_vertices = local.overwound_vertex_ids.size();
-  const auto boundary = MU::check_boundary_self_intersections<2>(map.positions, map.triangles);
-  counts.boundary_intersections = boundary.number_of_intersecting_pairs;
+  m.local = MU::check_local_invertibility<2>(map.positions, map.triangles, map.reference_orientation, map.is_fixed);
+  m.covering = MU::vertex_covering_numbers_2(map.positions, map.triangles, map.reference_orientation);
+  counts.overwound_vertices = m.local.overwound_vertex_ids.size();
+  m.boundary = MU::check_boundary_self_intersections<2>(map.positions, map.triangles);
+  counts.boundary_intersections = m.boundary.number_of_intersecting_pairs;
+  return m;
+}
 
-  // Layout: title lines (the caller's, then the counts), the map in a square
-  // of `size` pixels, the legend.
-  const double margin = 20, title_height = map.title.empty() ? 30 : 50, legend_height = 56, size = 860;
-  const Frame frame = make_frame(map.positions, margin, title_height + margin, size);
-  const double width = (std::max)(frame.width + 2 * margin, 900.);
-  const double height = title_height + frame.height + 2 * margin + legend_height;
-  // On fine meshes grey edges would hide the colours: outline with the fill instead.
-  const double pixels_per_triangle =
-    map.triangles.empty() ? 0. : (frame.width * frame.height + 1.) / double(map.triangles.size());
-  const bool grey_edges = pixels_per_triangle > 60;
-
-  const auto flags = out.flags();
-  const auto precision = out.precision();
-  out << std::fixed << std::setprecision(2);
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-
+/// The caller's title, then the counts.
+void title_lines(std::ostream& out, const Svg_map& map, const Svg_counts& counts, const Marks& marks, double margin,
+                 double title_height)
+{
   std::string summary = counted(counts.triangles, "triangle", "triangles") + ", " + std::to_string(counts.inverted) +
                         " inverted (red), " +
                         counted(counts.overwound_vertices, "over-wound vertex", "over-wound vertices") +
                         " (circled), " +
                         counted(counts.boundary_intersections, "boundary crossing", "boundary crossings") + " (x)";
   if(!map.overlay.empty()) summary += ", " + counted(counts.overlay, "phantom", "phantoms") + " (dashed)";
-  if(local.input_defects > 0) summary += ", " + counted(local.input_defects, "input defect", "input defects");
+  if(marks.local.input_defects > 0) summary += ", " + counted(marks.local.input_defects, "input defect", "input defects");
   const std::string text_style = "font-family=\"sans-serif\" font-size=\"14\"";
   if(!map.title.empty())
     out << "<text class=\"title\" x=\"" << margin << "\" y=\"20\" " << text_style << ">" << escaped(map.title)
         << "</text>\n";
   out << "<text class=\"counts\" x=\"" << margin << "\" y=\"" << title_height - 10 << "\" " << text_style << ">"
       << escaped(summary) << "</text>\n";
+}
 
-  // Inverted triangles last, so that where they fold over others the red shows.
+/// The triangles coloured by distortion, inverted ones last, so that where
+/// they fold over others the red shows.
+void triangles(std::ostream& out, const Svg_map& map, const Frame& frame, const std::vector<char>& inverted)
+{
+  const std::vector<double> distortion = distortions(map);
+  // On fine meshes grey edges would hide the colours: outline with the fill instead.
+  const double pixels_per_triangle =
+    map.triangles.empty() ? 0. : (frame.width * frame.height + 1.) / double(map.triangles.size());
+  const bool grey_edges = pixels_per_triangle > 60;
   out << "<g class=\"triangles\" stroke-linejoin=\"round\">\n";
   for(int pass = 0; pass < 2; ++pass)
     for(std::size_t k = 0; k < map.triangles.size(); ++k) {
@@ -317,38 +299,82 @@ Svg_counts write_svg(std::ostream& out, const Svg_map& map)
       polygon(out, frame, map.positions, map.triangles[k], attributes);
     }
   out << "</g>\n";
+}
 
+void boundary_lines(std::ostream& out, const Svg_map& map, const Frame& frame,
+                    const std::vector<std::array<std::size_t, 2>>& boundary_edges)
+{
   out << "<g class=\"boundary\" stroke=\"#000000\" stroke-width=\"1.2\" stroke-linecap=\"round\">\n";
-  const auto boundary_edges = MU::boundary_facets<3>(map.triangles);
   for(const auto& e : boundary_edges) {
     const Point a = frame(map.positions[e[0]]), b = frame(map.positions[e[1]]);
     out << "<line x1=\"" << a[0] << "\" y1=\"" << a[1] << "\" x2=\"" << b[0] << "\" y2=\"" << b[1] << "\"/>\n";
   }
   out << "</g>\n";
+}
 
+/// Circles around the over-wound vertices, with their winding: an integer
+/// at interior vertices, turns of the angle sum at boundary ones.
+void overwound_vertices(std::ostream& out, const Svg_map& map, const Frame& frame, const Marks& marks,
+                        const std::vector<std::array<std::size_t, 2>>& boundary_edges)
+{
+  out << "<g class=\"overwound\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" << overwound_colour << "\">\n";
+  std::vector<char> on_boundary(map.positions.size(), 0);
+  for(const auto& e : boundary_edges) on_boundary[e[0]] = on_boundary[e[1]] = 1;
+  for(std::size_t v : marks.local.overwound_vertex_ids) {
+    const Point q = frame(map.positions[v]);
+    out << "<circle class=\"overwound\" cx=\"" << q[0] << "\" cy=\"" << q[1] << "\" r=\"7\" fill=\"none\" stroke=\""
+        << overwound_colour << "\" stroke-width=\"2\"/>";
+    out << "<text x=\"" << q[0] + 9 << "\" y=\"" << q[1] - 6 << "\">";
+    if(on_boundary[v]) out << marks.covering[v];
+    else out << std::lround(marks.covering[v]);
+    out << "</text>\n";
+  }
+  out << "</g>\n";
+}
+
+} // namespace
+
+Svg_counts write_svg(const std::string& path, const Svg_map& map)
+{
+  check(map);   // before the file is created
+  CGAL::Mesh_untangling::IO::internal::Atomic_output_file file(path);
+  const Svg_counts counts = write_svg(file.stream(), map);
+  file.commit();
+  return counts;
+}
+
+Svg_counts write_svg(std::ostream& out, const Svg_map& map)
+{
+  check(map);
+  Svg_counts counts;
+  counts.triangles = map.triangles.size();
+  counts.overlay = map.overlay.size();
+  const Marks marks = find_marks(map, counts);
+
+  // Layout: title lines, the map in a square of `size` pixels, the legend.
+  const double margin = 20, title_height = map.title.empty() ? 30 : 50, legend_height = 56, size = 860;
+  const Frame frame = make_frame(map.positions, margin, title_height + margin, size);
+  const double width = (std::max)(frame.width + 2 * margin, 900.);
+  const double height = title_height + frame.height + 2 * margin + legend_height;
+
+  const auto flags = out.flags();
+  const auto precision = out.precision();
+  out << std::fixed << std::setprecision(2);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  title_lines(out, map, counts, marks, margin, title_height);
+  triangles(out, map, frame, marks.inverted);
+  const auto boundary_edges = MU::boundary_facets<3>(map.triangles);
+  boundary_lines(out, map, frame, boundary_edges);
   if(!map.overlay.empty()) {
     out << "<g class=\"overlay\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" stroke-dasharray=\"4 3\">\n";
     for(const auto& t : map.overlay) polygon(out, frame, map.positions, t, "class=\"phantom\"");
     out << "</g>\n";
   }
-
-  for(const auto& x : boundary.intersection_points) cross(out, frame(x), 4, "crossing");
-
-  out << "<g class=\"overwound\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" << overwound_colour << "\">\n";
-  std::vector<char> on_boundary(map.positions.size(), 0);
-  for(const auto& e : boundary_edges) on_boundary[e[0]] = on_boundary[e[1]] = 1;
-  for(std::size_t v : local.overwound_vertex_ids) {
-    const Point q = frame(map.positions[v]);
-    out << "<circle class=\"overwound\" cx=\"" << q[0] << "\" cy=\"" << q[1] << "\" r=\"7\" fill=\"none\" stroke=\""
-        << overwound_colour << "\" stroke-width=\"2\"/>";
-    // The winding: an integer at interior vertices, turns of the angle sum at boundary ones.
-    out << "<text x=\"" << q[0] + 9 << "\" y=\"" << q[1] - 6 << "\">";
-    if(on_boundary[v]) out << covering[v];
-    else out << std::lround(covering[v]);
-    out << "</text>\n";
-  }
-  out << "</g>\n";
-
+  for(const auto& x : marks.boundary.intersection_points) cross(out, frame(x), 4, "crossing");
+  overwound_vertices(out, map, frame, marks, boundary_edges);
   legend(out, margin, title_height + frame.height + 2 * margin, map.distortion.empty(), !map.overlay.empty());
   out << "</svg>\n";
   out.flags(flags);
