@@ -1,0 +1,307 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The keywords and sections of a MEDIT (.mesh) file, read and written one at a time.
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_MEDIT_SECTIONS_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_MEDIT_SECTIONS_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
+#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
+#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
+#include <CGAL/Mesh_untangling/IO/internal/number_parsing.h>
+#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+struct MEDIT_elements
+{
+  std::vector<std::array<std::size_t, 4>> ids;  // 1-based, as in the file
+  std::vector<std::size_t> lines;
+  std::size_t header_line = 0;                  // 0: no such block
+};
+
+struct MEDIT_content
+{
+  int dimension = 0;
+  std::size_t vertices_line = 0;                // 0: no Vertices block
+  std::vector<std::array<double, 3>> vertices;
+  MEDIT_elements triangles;
+  MEDIT_elements tetrahedra;
+  std::size_t quadrilaterals_line = 0;          // of a non-empty block
+};
+
+// A word where a number should be means the block has fewer entries than
+// its count announced: say so instead of "not a number".
+inline Token next_MEDIT_value(Text_file& file, const Token& keyword, std::size_t done, std::size_t count)
+{
+  // The message is built only on failure: this runs once per number of the file.
+  auto status = [&] {
+    return "the " + std::string(keyword.text) + " block ends after " + std::to_string(done) + " of "
+           + std::to_string(count) + " entries";
+  };
+  Token token;
+  if(!file.next_token(token))
+    file.fail_truncated(status());
+  double ignored;
+  if(std::isalpha(static_cast<unsigned char>(token.text[0]))
+     && parse_double(token.text, ignored) == Number_status::NOT_A_NUMBER)
+    file.fail(token.line, "truncated: " + status() + " (found " + quote_token(token.text) + ")");
+  return token;
+}
+
+// A number of a MEDIT block; `describe` names it, called only on failure.
+template <class Describe>
+double next_MEDIT_double(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                         Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  double value = 0;
+  if(parse_double(token.text, value) != Number_status::OK)
+    to_double(file, token, describe());   // throws, naming the value
+  return value;
+}
+
+// A vertex index of a MEDIT element; `line` gets the line it is on.
+template <class Describe>
+std::size_t next_MEDIT_index(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                             std::size_t& line, Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  line = token.line;
+  std::size_t value = 0;
+  if(!parse_size(token.text, value))
+    to_size(file, token, describe());   // throws, naming the value
+  return value;
+}
+
+// References are read only to be checked.
+template <class Describe>
+void skip_MEDIT_reference(Text_file& file, const Token& keyword, std::size_t done, std::size_t count,
+                          Describe describe)
+{
+  const Token token = next_MEDIT_value(file, keyword, done, count);
+  long long ignored = 0;
+  if(!parse_integer(token.text, ignored))
+    to_integer(file, token, describe());   // throws, naming the reference
+}
+
+inline std::size_t read_MEDIT_count(Text_file& file, const Token& keyword)
+{
+  Token token;
+  if(!file.next_token(token))
+    file.fail_truncated("expected the number of " + std::string(keyword.text));
+  return to_size(file, token, "number of " + std::string(keyword.text));
+}
+
+inline void read_MEDIT_vertices(Text_file& file, const Token& keyword, MEDIT_content& content)
+{
+  if(content.vertices_line != 0)
+    file.fail(keyword.line, "second Vertices block (the first is at line "
+                                + std::to_string(content.vertices_line) + ")");
+  content.vertices_line = keyword.line;
+  const std::size_t count = read_MEDIT_count(file, keyword);
+  content.vertices.reserve(file.sane_capacity(count));
+  static const char* const axis[] = {"x", "y", "z"};
+  for(std::size_t i = 0; i < count; ++i) {
+    const auto what = [i] { return "vertex " + std::to_string(i + 1); };
+    std::array<double, 3> p = {0, 0, 0};
+    for(int c = 0; c < content.dimension; ++c)
+      p[c] = next_MEDIT_double(file, keyword, i, count,
+                               [&] { return std::string(axis[c]) + " coordinate of " + what(); });
+    skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
+    content.vertices.push_back(p);
+  }
+}
+
+inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, MEDIT_elements& block)
+{
+  if(block.header_line != 0)
+    file.fail(keyword.line, "second " + std::string(keyword.text) + " block (the first is at line "
+                                + std::to_string(block.header_line) + ")");
+  block.header_line = keyword.line;
+  const std::size_t count = read_MEDIT_count(file, keyword);
+  block.ids.reserve(file.sane_capacity(count));
+  block.lines.reserve(file.sane_capacity(count));
+  for(std::size_t i = 0; i < count; ++i) {
+    const auto what = [&] { return std::string(simplex_name(k)) + " " + std::to_string(i + 1); };
+    std::array<std::size_t, 4> ids = {0, 0, 0, 0};
+    std::size_t line = 0, first_line = 0;
+    for(int c = 0; c < k; ++c) {
+      ids[c] = next_MEDIT_index(file, keyword, i, count, line, [&] { return "vertex index of " + what(); });
+      first_line = c == 0 ? line : first_line;
+    }
+    block.lines.push_back(first_line);
+    skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
+    block.ids.push_back(ids);
+  }
+}
+
+// Skips a block this reader does not need, checking that it is numeric.
+inline std::size_t skip_MEDIT_block(Text_file& file, const Token& keyword, std::size_t width)
+{
+  const std::size_t count = read_MEDIT_count(file, keyword);
+  for(std::size_t i = 0; i < count; ++i)
+    for(std::size_t j = 0; j < width; ++j)
+      next_MEDIT_double(file, keyword, i, count, [&] { return "value in " + std::string(keyword.text); });
+  return count;
+}
+
+// Entry width of the blocks that carry no simplex (0: not one of them).
+inline std::size_t MEDIT_ignored_width(std::string_view keyword, int dimension)
+{
+  struct Entry { const char* keyword; std::size_t width; };
+  const std::size_t d = static_cast<std::size_t>(dimension);
+  const Entry table[] = {{"Edges", 3}, {"Corners", 1}, {"Ridges", 1}, {"RequiredVertices", 1},
+                         {"RequiredEdges", 1}, {"RequiredTriangles", 1}, {"RequiredQuadrilaterals", 1},
+                         {"RequiredTetrahedra", 1}, {"Normals", d}, {"Tangents", d}, {"NormalAtVertices", 2},
+                         {"TangentAtVertices", 2}, {"NormalAtTriangleVertices", 3}};
+  for(const Entry& e : table)
+    if(same_keyword(keyword, e.keyword))
+      return e.width;
+  return 0;
+}
+
+// Cells that are not simplices: their entry width.
+inline std::size_t MEDIT_other_cell_width(std::string_view keyword)
+{
+  struct Entry { const char* keyword; std::size_t width; };
+  const Entry table[] = {{"Quadrilaterals", 5}, {"Hexahedra", 9}, {"Prisms", 7}, {"Pyramids", 6}};
+  for(const Entry& e : table)
+    if(same_keyword(keyword, e.keyword))
+      return e.width;
+  return 0;
+}
+
+inline void read_MEDIT_header_value(Text_file& file, const Token& keyword, MEDIT_content& content)
+{
+  Token value;
+  if(!file.next_token(value))
+    file.fail_truncated("expected a value after " + std::string(keyword.text));
+  const std::size_t v = to_size(file, value, std::string(keyword.text));
+  if(same_keyword(keyword.text, "MeshVersionFormatted")) {
+    if(v < 1 || v > 4)
+      file.fail(value.line, "unsupported MeshVersionFormatted " + std::to_string(v));
+    return;
+  }
+  if(content.dimension != 0)
+    file.fail(keyword.line, "second Dimension keyword");
+  if(v != 2 && v != 3)
+    file.fail(value.line, "Dimension is " + std::to_string(v) + "; expected 2 or 3");
+  content.dimension = static_cast<int>(v);
+}
+
+inline void read_MEDIT_block(Text_file& file, const Token& keyword, MEDIT_content& content)
+{
+  if(content.dimension == 0)
+    file.fail(keyword.line, quote_token(keyword.text) + " before Dimension");
+  if(same_keyword(keyword.text, "Vertices"))
+    return read_MEDIT_vertices(file, keyword, content);
+  if(same_keyword(keyword.text, "Triangles"))
+    return read_MEDIT_elements(file, keyword, 3, content.triangles);
+  if(same_keyword(keyword.text, "Tetrahedra")) {
+    if(content.dimension == 2)
+      file.fail(keyword.line, "Tetrahedra in a mesh of Dimension 2");
+    return read_MEDIT_elements(file, keyword, 4, content.tetrahedra);
+  }
+  if(std::size_t width = MEDIT_ignored_width(keyword.text, content.dimension)) {
+    skip_MEDIT_block(file, keyword, width);
+    return;
+  }
+  if(std::size_t width = MEDIT_other_cell_width(keyword.text)) {
+    if(skip_MEDIT_block(file, keyword, width) == 0)
+      return;
+    if(!same_keyword(keyword.text, "Quadrilaterals"))
+      file.fail(keyword.line, std::string(keyword.text) + " are not supported (only triangles and tetrahedra)");
+    content.quadrilaterals_line = keyword.line;
+    return;
+  }
+  file.fail(keyword.line, "unsupported MEDIT keyword " + quote_token(keyword.text));
+}
+
+inline MEDIT_content read_MEDIT_content(Text_file& file)
+{
+  MEDIT_content content;
+  Token keyword;
+  while(file.next_token(keyword)) {
+    if(same_keyword(keyword.text, "End")) {
+      if(file.next_token(keyword))
+        file.fail(keyword.line, "unexpected data after End: " + quote_token(keyword.text));
+      break;
+    }
+    if(same_keyword(keyword.text, "MeshVersionFormatted") || same_keyword(keyword.text, "Dimension"))
+      read_MEDIT_header_value(file, keyword, content);
+    else
+      read_MEDIT_block(file, keyword, content);
+  }
+  if(content.dimension == 0)
+    file.fail_truncated("no Dimension keyword");
+  return content;
+}
+
+// Tetrahedra win: the Triangles of a tet mesh are only its boundary.
+inline void select_MEDIT_simplices(const Text_file& file, const MEDIT_content& content, Mesh_file& mesh)
+{
+  const bool tets = !content.tetrahedra.ids.empty();
+  const MEDIT_elements& block = tets ? content.tetrahedra : content.triangles;
+  if(!tets && content.quadrilaterals_line != 0)
+    file.fail(content.quadrilaterals_line, "Quadrilaterals are not supported (only triangles and tetrahedra)");
+  mesh.simplex_size = tets ? 4 : (block.ids.empty() ? 0 : 3);
+  mesh.simplices.reserve(block.ids.size());
+  for(std::size_t i = 0; i < block.ids.size(); ++i) {
+    std::string defect = simplex_defect(block.ids[i], mesh.simplex_size, content.vertices.size(), 1);
+    if(!defect.empty())
+      file.fail(block.lines[i], std::string(simplex_name(mesh.simplex_size)) + " " + std::to_string(i + 1)
+                                    + ": " + defect);
+    mesh.simplices.push_back(to_zero_based(block.ids[i], mesh.simplex_size, 1));
+  }
+  mesh.simplex_lines = block.lines;
+}
+
+// A planar mesh read from a 3D file may have a z of -0.0, which a
+// Dimension 2 file would give back as +0.0: such a mesh is written in 3D,
+// so that reading what was written gives the same bits.
+inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points)
+{
+  for(const std::array<double, 3>& p : points)
+    if(p[2] == 0 && std::signbit(p[2]))
+      return true;
+  return false;
+}
+
+inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
+{
+  if(mesh.simplices.empty())
+    return;
+  const int k = mesh.simplex_size;
+  out << (k == 4 ? "Tetrahedra\n" : "Triangles\n") << mesh.simplices.size() << '\n';
+  for(const std::array<std::size_t, 4>& s : mesh.simplices) {
+    for(int c = 0; c < k; ++c)
+      out << s[c] + 1 << ' ';
+    out << "0\n";
+  }
+  out << '\n';
+}
+
+} // namespace internal
+
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_MEDIT_SECTIONS_H

@@ -1,0 +1,217 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The lines of a Wavefront OBJ file (v, vt, f), read and written one at a time.
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_OBJ_LINES_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_OBJ_LINES_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
+#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
+#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
+#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+struct OBJ_face
+{
+  std::array<std::size_t, 4> vertices;  // 1-based
+  std::array<std::size_t, 3> textures;  // 1-based; 0: none
+  std::size_t line;
+};
+
+struct OBJ_content
+{
+  std::vector<std::array<double, 3>> positions;  // v
+  std::vector<std::size_t> position_lines;
+  std::vector<std::array<double, 3>> textures;   // vt
+  std::vector<OBJ_face> faces;
+};
+
+// Resolves a 1-based or negative (relative to the `count` so far) index.
+inline std::size_t resolve_OBJ_index(const Text_file& file, const Token& token, std::size_t count,
+                                     const std::string& what)
+{
+  const long long i = to_integer(file, token, what);
+  if(i == 0)
+    file.fail(token.line, what + " is 0 (OBJ indices start at 1)");
+  if(i > 0)
+    return static_cast<std::size_t>(i);
+  const unsigned long long back = 0ull - static_cast<unsigned long long>(i);
+  if(back > count)
+    file.fail(token.line, what + " " + std::to_string(i) + " points before the first element");
+  return count + 1 - static_cast<std::size_t>(back);
+}
+
+inline std::vector<std::string_view> split_OBJ_corner(std::string_view corner)
+{
+  std::vector<std::string_view> parts;
+  std::size_t begin = 0;
+  for(std::size_t slash; (slash = corner.find('/', begin)) != std::string_view::npos; begin = slash + 1)
+    parts.push_back(corner.substr(begin, slash - begin));
+  parts.push_back(corner.substr(begin));
+  return parts;
+}
+
+// Corners are "v", "v/t", "v//n" or "v/t/n"; normals are ignored.
+inline void read_OBJ_corner(const Text_file& file, const Token& corner, const OBJ_content& content,
+                            OBJ_face& face, int c)
+{
+  std::vector<std::string_view> parts = split_OBJ_corner(corner.text);
+  if(parts.size() > 3)
+    file.fail(corner.line, "malformed face corner " + quote_token(corner.text));
+  face.vertices[c] = resolve_OBJ_index(file, Token{parts[0], corner.line}, content.positions.size(), "vertex index");
+  face.textures[c] = 0;
+  if(parts.size() > 1 && !parts[1].empty())
+    face.textures[c] = resolve_OBJ_index(file, Token{parts[1], corner.line}, content.textures.size(),
+                                         "texture index");
+  if(parts.size() > 2 && !parts[2].empty())
+    to_integer(file, Token{parts[2], corner.line}, "normal index");
+}
+
+inline void read_OBJ_face(const Text_file& file, const std::vector<Token>& tokens, OBJ_content& content)
+{
+  const std::size_t line = tokens[0].line;
+  if(tokens.size() != 4)
+    file.fail(line, "face with " + std::to_string(file.tokens_on_line() - 1) + " vertices; only triangles are supported");
+  OBJ_face face{{0, 0, 0, 0}, {0, 0, 0}, line};
+  for(int c = 0; c < 3; ++c)
+    read_OBJ_corner(file, tokens[c + 1], content, face, c);
+  content.faces.push_back(face);
+}
+
+// v x y z [w] or v x y z r g b: only x y z matter here.
+inline void read_OBJ_vertex(const Text_file& file, const std::vector<Token>& tokens, OBJ_content& content)
+{
+  const std::string what = "vertex " + std::to_string(content.positions.size() + 1);
+  if(tokens.size() < 4 || tokens.size() > 7)
+    file.fail(tokens[0].line, what + ": expected 'v x y z', got " + std::to_string(file.tokens_on_line() - 1) + " numbers");
+  for(std::size_t t = 4; t < tokens.size(); ++t)
+    to_double(file, tokens[t], "extra value of " + what);
+  content.positions.push_back(to_point(file, tokens, 1, 3, what));
+  content.position_lines.push_back(tokens[0].line);
+}
+
+inline void read_OBJ_texture(const Text_file& file, const std::vector<Token>& tokens, OBJ_content& content)
+{
+  const std::string what = "texture coordinate " + std::to_string(content.textures.size() + 1);
+  if(tokens.size() != 3 && tokens.size() != 4)
+    file.fail(tokens[0].line, what + ": expected 'vt u v', got " + std::to_string(file.tokens_on_line() - 1) + " numbers");
+  if(tokens.size() == 4)
+    to_double(file, tokens[3], "w of " + what);
+  content.textures.push_back(to_point(file, tokens, 1, 2, what));
+}
+
+inline bool is_ignored_OBJ_statement(std::string_view keyword)
+{
+  static const char* const ignored[] = {"vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p"};
+  for(const char* k : ignored)
+    if(keyword == k)
+      return true;
+  return false;
+}
+
+inline OBJ_content read_OBJ_content(Text_file& file)
+{
+  OBJ_content content;
+  std::vector<Token> tokens;
+  // Like every other format, an OBJ file must hold a mesh: an empty one (or
+  // one of comments, groups and material libraries only) is more likely a
+  // failed export than a mesh without vertices, and it would be written
+  // back as an empty file.
+  if(!file.next_line(tokens))
+    file.fail_truncated("no OBJ statement");
+  do {
+    const std::string_view keyword = tokens[0].text;
+    if(keyword == "v")
+      read_OBJ_vertex(file, tokens, content);
+    else if(keyword == "vt")
+      read_OBJ_texture(file, tokens, content);
+    else if(keyword == "f")
+      read_OBJ_face(file, tokens, content);
+    else if(!is_ignored_OBJ_statement(keyword))
+      file.fail(tokens[0].line, "unsupported OBJ statement " + quote_token(keyword));
+  } while(file.next_line(tokens));
+  if(content.positions.empty())
+    file.fail_truncated("no vertex (v)");
+  return content;
+}
+
+inline void check_OBJ_faces(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
+{
+  const std::size_t n = content.positions.size();
+  mesh.simplices.reserve(content.faces.size());
+  mesh.simplex_lines.reserve(content.faces.size());
+  for(std::size_t i = 0; i < content.faces.size(); ++i) {
+    const OBJ_face& face = content.faces[i];
+    std::string defect = simplex_defect(face.vertices, 3, n, 1);
+    if(!defect.empty())
+      file.fail(face.line, "face " + std::to_string(i + 1) + ": " + defect);
+    mesh.simplices.push_back(to_zero_based(face.vertices, 3, 1));
+    mesh.simplex_lines.push_back(face.line);
+  }
+}
+
+// The map is per vertex: a vertex whose corners name different (u, v) sits
+// on a seam, where one position per vertex cannot represent the map.
+inline void assign_OBJ_texture(const Text_file& file, const OBJ_content& content, const OBJ_face& face, int c,
+                               std::vector<std::size_t>& texture_of)
+{
+  const std::size_t v = face.vertices[c];
+  const std::size_t t = face.textures[c];
+  if(t == 0)
+    file.fail(face.line, "face corner without a texture coordinate, while other corners have one");
+  if(t > content.textures.size())
+    file.fail(face.line, "texture index " + std::to_string(t) + " is out of range "
+                             + index_range(content.textures.size(), 1));
+  std::size_t& assigned = texture_of[v - 1];
+  if(assigned != 0 && assigned != t && content.textures[assigned - 1] != content.textures[t - 1])
+    file.fail(face.line, "vertex " + std::to_string(v) + " has two different texture coordinates (vt "
+                             + std::to_string(assigned) + " and vt " + std::to_string(t)
+                             + "): per-corner texture coordinates (seams) are not supported");
+  assigned = t;
+}
+
+inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
+{
+  bool any_texture = false;
+  for(const OBJ_face& face : content.faces)
+    for(std::size_t t : face.textures)
+      any_texture = any_texture || t != 0;
+  if(!any_texture)
+    return;
+  std::vector<std::size_t> texture_of(content.positions.size(), 0);
+  for(const OBJ_face& face : content.faces)
+    for(int c = 0; c < 3; ++c)
+      assign_OBJ_texture(file, content, face, c, texture_of);
+  mesh.map.reserve(texture_of.size());
+  for(std::size_t v = 0; v < texture_of.size(); ++v) {
+    if(texture_of[v] == 0)
+      file.fail(content.position_lines[v], "vertex " + std::to_string(v + 1)
+                                               + " has no texture coordinate (it is in no face)");
+    mesh.map.push_back(content.textures[texture_of[v] - 1]);
+  }
+  mesh.map_dimension = 2;
+}
+
+} // namespace internal
+
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_OBJ_LINES_H
