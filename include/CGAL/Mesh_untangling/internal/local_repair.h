@@ -180,8 +180,7 @@ template <int d>
 void describe_repaired_map(const Untangling_input<d>& in, const Untangling_options& options, Untangling_result& r)
 {
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
   record_verdict(report, r);
   if(report.has_no_repairable_defect() || report.inverted_elements == 0) {
     r.status = final_status(report, false, false, false);

@@ -79,15 +79,15 @@ void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>
 /// a stall early (Stall_test::COUNT_NOT_HALVED) when stage 1 would follow,
 /// and never with `never_stall` (the patient rerun of local_repair.h).
 template <int d>
-Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, const std::vector<bool>& is_fixed,
-                             Eps_loop<d>& loop, bool regular_targets_follow, bool never_stall)
+Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, Eps_loop<d>& loop,
+                             bool regular_targets_follow, bool never_stall)
 {
   Eps_loop_outcome outcome;
   if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
     const std::vector<double> start = P.x;
     if(loop.published_trial(P, outcome, [&] {
          hand_back_free_vertices(P, in);
-         return check_mesh<d>(in, P.reference_orientation, is_fixed).has_no_repairable_defect();
+         return check_mesh<d>(in, P.reference_orientation).has_no_repairable_defect();
        }))
       return outcome;
     P.x = start;
@@ -171,15 +171,14 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   }
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed);
+  const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation);
   result.inverted_before = before.inverted_elements;
   result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
 
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
   const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
-  Eps_loop_outcome outcome = run_stage_0(P, in, is_fixed, loop, regular_targets_follow, options.stage_0_never_stalls);
+  Eps_loop_outcome outcome = run_stage_0(P, in, loop, regular_targets_follow, options.stage_0_never_stalls);
   if(outcome.stalled && !options.give_up_on_stall) outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome);
   auto summary = determinant_summary(P, P.x.data());
   if(loop.restore_least_tangled(P, summary.non_positive)) {
@@ -193,7 +192,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
 
   hand_back_free_vertices(P, in);
 
-  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
   if(phantoms_used && in.phantom_elements > 0) {   // (without phantoms, targets may be empty)
     const std::size_t m = in.number_of_mesh_elements(), n = in.number_of_mesh_vertices();
     phantoms_used->elements.assign(in.elements.begin() + m, in.elements.end());

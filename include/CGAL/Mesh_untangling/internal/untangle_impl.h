@@ -32,8 +32,7 @@ Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_
 {
   Untangling_result figures;
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  figures.inverted_before = check_mesh_elements<d>(in, P.reference_orientation, is_fixed).inverted_elements;
+  figures.inverted_before = check_mesh_elements<d>(in, P.reference_orientation).inverted_elements;
   figures.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
   return figures;
 }
@@ -100,8 +99,7 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
 {
   in.positions.swap(given);   // (given holds the result meanwhile)
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  const Invertibility_report input = check_mesh<d>(in, P.reference_orientation, is_fixed);
+  const Invertibility_report input = check_mesh<d>(in, P.reference_orientation);
   Untangling_result kept = r;
   record_verdict(input, kept);
   if(!has_fewer_defects(kept, r)) {
@@ -137,9 +135,7 @@ void validate_stars(const Untangling_input<d>& in)
   if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
-  std::vector<bool> is_fixed(in.is_fixed.begin(), in.is_fixed.end());
-  is_fixed.resize(in.number_of_mesh_vertices(), false);
-  const Invertibility_report report = check_mesh<d>(in, orientation, is_fixed);
+  const Invertibility_report report = check_mesh<d>(in, orientation);
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
                                 " is not a disk or a half-disk (its elements meet there only at the vertex, or "

@@ -52,25 +52,27 @@ void measure_quality(const Untangling_problem<d>& P, Untangling_result& r)
 }
 
 /// `check(positions, elements, orientation, fixed)` on the mesh part of `in`
-/// (phantoms left out): a report on the mesh alone.
+/// (phantoms left out), with the caller's fixed vertices: a report on the
+/// mesh alone.  (The vertices that the solver holds besides, those in no
+/// element, are in no star either.)
 template <int d, class Check>
 Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                     const std::vector<bool>& is_fixed, const Check& check)
+                                     const Check& check)
 {
   const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
   const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
   const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
   const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
-  const std::vector<bool> fixed(is_fixed.begin(), is_fixed.begin() + n);
+  std::vector<bool> fixed(n, false);
+  std::copy_n(in.is_fixed.begin(), std::min(n, in.is_fixed.size()), fixed.begin());
   return check(as_arrays<d>(positions), elements, orientation, fixed);
 }
 
 /// The invertibility report on the mesh part of `in`: elements and stars.
 template <int d>
-Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                const std::vector<bool>& is_fixed)
+Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
 {
-  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+  return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
     return check_local_invertibility<d>(arguments...);
   });
 }
@@ -78,10 +80,9 @@ Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector
 /// Only what the element orientations decide (the inverted elements of the
 /// mesh part of `in`): the figures before a run, without the cost of the stars.
 template <int d>
-Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation,
-                                         const std::vector<bool>& is_fixed)
+Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
 {
-  return check_mesh_part<d>(in, reference_orientation, is_fixed, [](const auto&... arguments) {
+  return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
     return check_elements<d>(arguments...);
   });
 }
