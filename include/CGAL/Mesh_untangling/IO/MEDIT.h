@@ -6,22 +6,8 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/internal/MEDIT_sections.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
-#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
-#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
-#include <CGAL/Mesh_untangling/IO/internal/number_parsing.h>
-#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
-#include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
-#include <cctype>
-#include <cmath>
-#include <cstddef>
 #include <string>
-#include <string_view>
-#include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {

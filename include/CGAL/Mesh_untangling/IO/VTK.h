@@ -7,22 +7,8 @@
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK_field.h>
 #include <CGAL/Mesh_untangling/IO/internal/VTK_sections.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
-#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
-#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
-#include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
-#include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
-#include <iterator>
-#include <limits>
 #include <string>
-#include <string_view>
-#include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
