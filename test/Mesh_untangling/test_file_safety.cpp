@@ -9,6 +9,8 @@
 // reader's memory is bounded by the file's size, not by a line's length.
 // POSIX only (FIFOs, signals, fork).
 
+#include "test_files.h"
+
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
@@ -50,19 +52,7 @@ using IO::internal::Output_files;
 
 namespace {
 
-int failures = 0;
-
-void report_failure(int line, const std::string& message)
-{
-  ++failures;
-  std::cerr << __FILE__ << ":" << line << ": FAILED: " << message << std::endl;
-}
-
-#define CHECK(condition)                                 \
-  do {                                                   \
-    if(!(condition))                                     \
-      report_failure(__LINE__, "CHECK(" #condition ")"); \
-  } while(false)
+void report_failure(int line, const std::string& message) { test::report_failure(__FILE__, line, message); }
 
 // `statement` must throw an exception of type `Error` whose what() has `phrase`.
 template <class Error>
@@ -87,18 +77,10 @@ std::string temp_path(const std::string& name) { return (temp_dir / name).string
 
 std::string write_text(const std::string& name, const std::string& content)
 {
-  const std::string path = temp_path(name);
-  std::ofstream(path, std::ios::binary) << content;
-  return path;
+  return test::write_text(temp_path(name), content);
 }
 
-std::string read_text(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_text;
 
 // Every temporary keeps ".tmp" in its name (out.vtk.<hex>.tmp.vtk).
 std::size_t temporaries_left()
@@ -358,12 +340,7 @@ void test_out_of_memory_is_a_read_error()
 
 void make_temp_dir()
 {
-  std::random_device seed;
-  for(int attempt = 0; attempt < 100; ++attempt) {
-    temp_dir = fs::temp_directory_path() / ("mesh_untangling_test_file_safety_" + std::to_string(seed()));
-    if(fs::create_directory(temp_dir))
-      return;
-  }
+  temp_dir = test::make_temporary_folder("mesh_untangling_test_file_safety_");
 }
 
 } // namespace
@@ -382,8 +359,8 @@ int main()
   test_out_of_memory_is_a_read_error();
   std::error_code ec;
   fs::remove_all(temp_dir, ec);
-  if(failures != 0) {
-    std::cerr << failures << " check(s) failed\n";
+  if(test::failures() != 0) {
+    std::cerr << test::failures() << " check(s) failed\n";
     return 1;
   }
   std::cout << "test_file_safety: all checks passed\n";

@@ -4,6 +4,8 @@
 // The file-format layer: round trips, malformed input, atomic writing, and
 // the external data sets (argv[1]; skipped with a message when absent).
 
+#include "test_files.h"
+
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
@@ -33,19 +35,7 @@ typedef std::array<std::size_t, 4> Simplex;
 
 namespace {
 
-int failures = 0;
-
-void report_failure(int line, const std::string& message)
-{
-  ++failures;
-  std::cerr << __FILE__ << ":" << line << ": FAILED: " << message << std::endl;
-}
-
-#define CHECK(condition)                                 \
-  do {                                                   \
-    if(!(condition))                                     \
-      report_failure(__LINE__, "CHECK(" #condition ")"); \
-  } while(false)
+void report_failure(int line, const std::string& message) { test::report_failure(__FILE__, line, message); }
 
 fs::path temp_dir;
 
@@ -56,19 +46,10 @@ std::string temp_path(const std::string& name)
 
 std::string write_text(const std::string& name, const std::string& content)
 {
-  const std::string path = temp_path(name);
-  std::ofstream out(path, std::ios::binary);
-  out << content;
-  return path;
+  return test::write_text(temp_path(name), content);
 }
 
-std::string read_text(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_text;
 
 bool same_bits(double a, double b)
 {
@@ -856,12 +837,7 @@ void test_vtk_data(const fs::path& data)
 
 void make_temp_dir()
 {
-  std::random_device seed;
-  for(int attempt = 0; attempt < 100; ++attempt) {
-    temp_dir = fs::temp_directory_path() / ("mesh_untangling_test_io_" + std::to_string(seed()));
-    if(fs::create_directory(temp_dir))
-      break;
-  }
+  temp_dir = test::make_temporary_folder("mesh_untangling_test_io_");
   fs::create_directory(temp_dir / "dir.off");
 }
 
@@ -895,8 +871,8 @@ int main(int argc, char** argv)
   }
 
   fs::remove_all(temp_dir);
-  if(failures != 0) {
-    std::cerr << failures << " check(s) failed" << std::endl;
+  if(test::failures() != 0) {
+    std::cerr << test::failures() << " check(s) failed" << std::endl;
     return 1;
   }
   std::cout << "test_io: all checks passed" << std::endl;
