@@ -22,6 +22,32 @@ namespace Mesh_untangling {
 namespace internal {
 
 /// Calls `visit(v, type, signed_angle_sum, star_elements)` for every
+/// non-isolated vertex v in [first, last), where `corner(v, e)` gives the
+/// piece of v's link in element e (oriented as e's target) and e's signed
+/// angle at v, and `Classifier` tells the link's type.
+template <class Classifier, class Link_piece, class Corner, class Visitor>
+void visit_vertex_stars(const Vertex_stars& stars, std::size_t first, std::size_t last, const Corner& corner,
+                        Visitor&& visit)
+{
+  Classifier classify;
+  std::vector<Link_piece> link;
+  std::vector<std::size_t> star;
+  for(std::size_t v = first; v < last; ++v) {
+    if(stars.begin(v) == stars.end(v))
+      continue;
+    link.clear();
+    star.assign(stars.elements.begin() + stars.begin(v), stars.elements.begin() + stars.end(v));
+    double sum = 0;
+    for(std::size_t e : star) {
+      const auto [piece, angle] = corner(v, e);
+      link.push_back(piece);
+      sum += angle;
+    }
+    visit(v, classify(link), sum, star);
+  }
+}
+
+/// Calls `visit(v, type, signed_angle_sum, star_elements)` for every
 /// non-isolated 2D vertex v in [first, last).
 template <class Visitor>
 void visit_vertex_stars_2(const std::vector<Vec2>& positions,
@@ -32,26 +58,15 @@ void visit_vertex_stars_2(const std::vector<Vec2>& positions,
                           std::size_t first, std::size_t last,
                           Visitor&& visit)
 {
-  Chain_classifier classify;
-  std::vector<Link_edge> link;
-  std::vector<std::size_t> star;
-  for(std::size_t v = first; v < last; ++v) {
-    if(stars.begin(v) == stars.end(v))
-      continue;
-    link.clear();
-    star.assign(stars.elements.begin() + stars.begin(v), stars.elements.begin() + stars.end(v));
-    double sum = 0;
-    for(std::size_t e : star) {
-      const auto& t = triangles[e];
-      const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
-      std::size_t a = t[(i + 1) % 3], b = t[(i + 2) % 3];
-      if(reference_sign(reference_orientation, e) < 0)
-        std::swap(a, b);
-      link.push_back({a, b});
-      sum += signs[e] * corner_angle(positions[v], positions[a], positions[b]);
-    }
-    visit(v, classify(link), sum, star);
-  }
+  const auto corner = [&](std::size_t v, std::size_t e) {
+    const auto& t = triangles[e];
+    const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
+    std::size_t a = t[(i + 1) % 3], b = t[(i + 2) % 3];
+    if(reference_sign(reference_orientation, e) < 0)
+      std::swap(a, b);
+    return std::make_pair(Link_edge{a, b}, signs[e] * corner_angle(positions[v], positions[a], positions[b]));
+  };
+  visit_vertex_stars<Chain_classifier, Link_edge>(stars, first, last, corner, visit);
 }
 
 /// Calls `visit(v, type, signed_solid_angle_sum, star_elements)` for every
@@ -65,27 +80,17 @@ void visit_vertex_stars_3(const std::vector<Vec3>& positions,
                           std::size_t first, std::size_t last,
                           Visitor&& visit)
 {
-  Surface_classifier classify;
-  std::vector<std::array<std::size_t, 3>> link;
-  std::vector<std::size_t> star;
-  for(std::size_t v = first; v < last; ++v) {
-    if(stars.begin(v) == stars.end(v))
-      continue;
-    link.clear();
-    star.assign(stars.elements.begin() + stars.begin(v), stars.elements.begin() + stars.end(v));
-    double sum = 0;
-    for(std::size_t e : star) {
-      const auto& t = tets[e];
-      const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
-      const auto perm = even_permutation_starting_with<4>(i);
-      std::array<std::size_t, 3> face = {t[perm[1]], t[perm[2]], t[perm[3]]};
-      if(reference_sign(reference_orientation, e) < 0)
-        std::swap(face[1], face[2]);
-      link.push_back(face);
-      sum += signs[e] * solid_angle(positions[v], positions[face[0]], positions[face[1]], positions[face[2]]);
-    }
-    visit(v, classify(link), sum, star);
-  }
+  const auto corner = [&](std::size_t v, std::size_t e) {
+    const auto& t = tets[e];
+    const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
+    const auto perm = even_permutation_starting_with<4>(i);
+    std::array<std::size_t, 3> face = {t[perm[1]], t[perm[2]], t[perm[3]]};
+    if(reference_sign(reference_orientation, e) < 0)
+      std::swap(face[1], face[2]);
+    return std::make_pair(face, signs[e] * solid_angle(positions[v], positions[face[0]], positions[face[1]],
+                                                       positions[face[2]]));
+  };
+  visit_vertex_stars<Surface_classifier, std::array<std::size_t, 3>>(stars, first, last, corner, visit);
 }
 
 struct Fan_entry
