@@ -20,6 +20,7 @@
 #include <CGAL/untangle_mesh.h>
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Mesh_untangling/target_orientations.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
@@ -972,6 +973,42 @@ void test_mesh_details()
   }
 }
 
+/// target_orientations: the orientations the untangler gives the targets,
+/// for checks of maps it did not make.
+void test_target_orientations()
+{
+  using P2 = SC::Point_2;
+  const std::vector<P2> map = {P2(0, 0), P2(1, 0), P2(0, 1), P2(1, 1), P2(2, 0), P2(2, 1)};
+  const std::vector<std::array<std::size_t, 3>> triangles = {{0, 1, 2}, {1, 3, 2}, {1, 4, 3}, {4, 5, 3}};
+  // rest: triangle 2 clockwise, triangle 3 flat (it takes the majority's sign, +1)
+  const std::vector<P2> mirrored_rest = {P2(0, 0), P2(1, 0), P2(0, 1), P2(1, 1), P2(0, 0.5), P2(2, 1.5)};
+  const auto o = MU::target_orientations(map, triangles, MU::parameters::rest_points(mirrored_rest));
+  CHECK((o == std::vector<int>{1, 1, -1, 1}));
+  // the same orientations as a run's Element_figures (a rest whose triangle 3 is flat)
+  const std::vector<P2> flat_rest = {P2(0, 0), P2(1, 0), P2(0, 1), P2(1, 1), P2(2, 0), P2(3, -1)};
+  const auto flat = MU::target_orientations(map, triangles, MU::parameters::rest_points(flat_rest));
+  CHECK((flat == std::vector<int>{1, 1, 1, 1}));
+  std::vector<P2> points = map;
+  std::vector<MU::Element_figures> figures;
+  const auto r = CGAL::untangle_simplex_soup(
+    points, triangles,
+    MU::parameters::rest_points(flat_rest, MU::parameters::element_figures_output(std::back_inserter(figures))));
+  CHECK_MESSAGE(figures.size() >= flat.size(), MU::to_string(r.status) << ": " << r.message);   // (phantoms after)
+  for(std::size_t k = 0; k < figures.size() && k < flat.size(); ++k) CHECK(figures[k].target_orientation == flat[k]);
+  // 3D rest triangles of a 2D map are laid flat, positively
+  std::vector<Point_3> rest_3d;
+  for(const P2& p : mirrored_rest) rest_3d.emplace_back(p.x(), p.y(), 0.);
+  const auto o3 = MU::target_orientations(map, triangles, MU::parameters::rest_points(rest_3d));
+  CHECK(std::all_of(o3.begin(), o3.end(), [](int s) { return s == 1; }));
+  // no rest: the sign of the map's total volume
+  std::vector<P2> mirrored_map;
+  for(const P2& p : map) mirrored_map.emplace_back(-p.x(), p.y());
+  const auto none = MU::target_orientations(mirrored_map, triangles);
+  CHECK(std::all_of(none.begin(), none.end(), [](int s) { return s == -1; }));
+  CHECK_THROWS_MESSAGE(MU::target_orientations(map, triangles, MU::parameters::rest_points(std::vector<P2>(3))),
+                       "3 rest points for 6 points");
+}
+
 int main()
 {
   test_grid<CGAL::Surface_mesh<Point_3>>("Surface_mesh, Simple_cartesian", bumpy);
@@ -990,6 +1027,7 @@ int main()
   test_degenerate_targets();
   test_invalid_input();
   test_mesh_details();
+  test_target_orientations();
 
   test_all_free<CGAL::Surface_mesh<Point_2>>("all free, planar, Newton", [](double x, double y) { return Point_2(x, y); }, MU::Solver::NEWTON);
   test_all_free<CGAL::Surface_mesh<Point_2>>("all free, planar, L-BFGS", [](double x, double y) { return Point_2(x, y); }, MU::Solver::LBFGS);
