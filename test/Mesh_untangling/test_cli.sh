@@ -8,42 +8,9 @@
 # Set TEST_CLI_NO_PYTHON=1 to check the reports with grep instead of python3.
 set -u
 
-if [ $# -lt 2 ]; then
-  echo "usage: $0 UNTANGLE_MESH MAKE_TANGLED_MESH [DATA_DIR]" >&2
-  exit 2
-fi
-UNTANGLE=$1
-MAKE=$2
 DATA=${3:-}
-for program in "$UNTANGLE" "$MAKE"; do
-  if [ ! -x "$program" ]; then
-    echo "error: $program is not an executable" >&2
-    exit 2
-  fi
-done
-# The tests run in a temporary directory: make the paths absolute.
-absolute() { case $1 in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
-UNTANGLE=$(absolute "$UNTANGLE")
-MAKE=$(absolute "$MAKE")
-[ -z "$DATA" ] || DATA=$(absolute "$DATA")
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/test_cli.XXXXXX") || exit 2
-trap 'rm -rf "$T"' EXIT
-cd "$T" || exit 2
-
-failures=0
-checks=0
-# check DESCRIPTION COMMAND...: the command must succeed.  One command: in
-# "check D A && B", B runs outside the check and its failure is not counted.
-check() {
-  local what=$1
-  shift
-  checks=$((checks + 1))
-  if ! "$@"; then
-    failures=$((failures + 1))
-    echo "FAIL: $what" >&2
-  fi
-}
+case $DATA in '' | /*) ;; *) DATA=$PWD/$DATA ;; esac
+. "$(dirname "$0")/cli_test_harness.sh" test_cli "$@"
 
 have_python=0
 if [ -z "${TEST_CLI_NO_PYTHON:-}" ] && command -v python3 > /dev/null 2>&1; then

@@ -10,29 +10,8 @@
 # usage: test_cli_files.sh UNTANGLE_MESH MAKE_TANGLED_MESH
 set -u
 
-if [ $# -lt 2 ] || [ ! -x "$1" ] || [ ! -x "$2" ]; then
-  echo "usage: $0 UNTANGLE_MESH MAKE_TANGLED_MESH" >&2
-  exit 2
-fi
-absolute() { case $1 in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
-UNTANGLE=$(absolute "$1")
-MAKE=$(absolute "$2")
+. "$(dirname "$0")/cli_test_harness.sh" test_cli_files "$@"
 
-T=$(mktemp -d "${TMPDIR:-/tmp}/test_cli_files.XXXXXX") || exit 2
-trap 'chmod -R u+w "$T" 2> /dev/null; rm -rf "$T"' EXIT
-cd "$T" || exit 2
-
-failures=0
-checks=0
-check() {
-  local what=$1
-  shift
-  checks=$((checks + 1))
-  if ! "$@"; then
-    failures=$((failures + 1))
-    echo "FAIL: $what" >&2
-  fi
-}
 # run NAME ARGS...: the tool under a 60 s watchdog (a blocked open must not
 # hang the test); keeps NAME.err and NAME.rc.
 run() {
