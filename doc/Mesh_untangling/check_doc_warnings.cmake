@@ -1,0 +1,18 @@
+# ctest doc_warnings: runs doxygen and fails when its warning log is not empty.
+# Arguments: -DDOXYGEN=... -DDOXYFILE=... -DWARNINGS=... (the Doxyfile's WARN_LOGFILE)
+file(REMOVE ${WARNINGS})
+execute_process(COMMAND ${CMAKE_COMMAND} -E env BIBINPUTS=. BSTINPUTS=. ${DOXYGEN} ${DOXYFILE}
+                RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "doxygen failed (${status}):\n${errors}")
+endif()
+if(NOT EXISTS ${WARNINGS})
+  message(FATAL_ERROR "doxygen wrote no warning log ${WARNINGS}")
+endif()
+file(READ ${WARNINGS} log)
+if(NOT log STREQUAL "")
+  string(REGEX MATCHALL "\n" lines "\n${log}")
+  list(LENGTH lines count)
+  message(FATAL_ERROR "doxygen warnings (about ${count} lines, ${WARNINGS}):\n${log}")
+endif()
+message(STATUS "manual built without warnings")
