@@ -1,5 +1,23 @@
-# ctest doc_warnings: runs doxygen and fails when its warning log is not empty.
+# ctest doc_warnings: runs doxygen and fails when its warning log is not empty,
+# or when a figure of a \cgalFigureBegin in the pages is not in the fig folder
+# (doxygen does not see those images: they are HTML <img>).
 # Arguments: -DDOXYGEN=... -DDOXYFILE=... -DWARNINGS=... (the Doxyfile's WARN_LOGFILE)
+#            -DPAGES=... (folder of the .txt pages) -DFIGURES=... (their fig folder)
+file(GLOB pages ${PAGES}/*.txt)
+foreach(page ${pages})
+  file(READ ${page} text)
+  string(REGEX MATCHALL "cgalFigureBegin{[^}]*}" figures "${text}")
+  foreach(figure ${figures})
+    string(REGEX REPLACE "^cgalFigureBegin{[^,]*,(.*)}$" "\\1" images "${figure}")
+    string(REPLACE "," ";" images "${images}")
+    foreach(image ${images})
+      string(STRIP "${image}" image)
+      if(NOT EXISTS ${FIGURES}/${image})
+        message(FATAL_ERROR "${page}: figure ${image} is not in ${FIGURES} (scripts/make_figures.sh draws them)")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
 file(REMOVE ${WARNINGS})
 execute_process(COMMAND ${CMAKE_COMMAND} -E env BIBINPUTS=. BSTINPUTS=. ${DOXYGEN} ${DOXYFILE}
                 RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
