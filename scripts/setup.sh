@@ -3,9 +3,11 @@
 # the project in build/ (Release).  Idempotent: quiet about packages unless
 # one is missing; a second run only rebuilds what changed.
 #
-# usage: scripts/setup.sh [--sanitize]
+# usage: scripts/setup.sh [--sanitize] [--doc]
 #   --sanitize  build in build-asan/ instead: Debug, AddressSanitizer and
 #               UndefinedBehaviorSanitizer (-DMESH_UNTANGLING_SANITIZE=ON)
+#   --doc       also install doxygen, bibtex and MathJax, and build the
+#               manual (HTML in BUILD/doc/Mesh_untangling/html)
 # Environment: JOBS (parallel build jobs, default 2).
 set -euo pipefail
 trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
@@ -13,16 +15,19 @@ trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD_DIR=$ROOT/build
 CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release)
+WITH_DOC=0
 for arg in "$@"; do
   case $arg in
     --sanitize)
       BUILD_DIR=$ROOT/build-asan
       CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DMESH_UNTANGLING_SANITIZE=ON) ;;
+    --doc)
+      WITH_DOC=1 ;;
     -h|--help)
-      sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *)
-      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize])" >&2
+      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc])" >&2
       exit 2 ;;
   esac
 done
@@ -44,6 +49,12 @@ done
 PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
           libsuitesparse-dev libopenblas0-serial liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev
           libmpfr-dev)
+# The manual (--doc only): doxygen; texlive-binaries for bibtex, which
+# formats the references (doc/Mesh_untangling/references.bib); libjs-mathjax
+# so that the formulas display without network access.
+if [ "$WITH_DOC" = 1 ]; then
+  PACKAGES+=(doxygen texlive-binaries libjs-mathjax)
+fi
 installed() { [[ "$(dpkg -s "$1" 2> /dev/null)" == *"Status: install ok installed"* ]]; }
 if ! command -v dpkg > /dev/null 2>&1; then
   echo "setup.sh: dpkg not found: this script installs Debian packages; install these by hand:" >&2
@@ -84,4 +95,8 @@ if ! cmake -S "$ROOT" -B "$BUILD_DIR" "${CMAKE_ARGS[@]}" > "$BUILD_DIR/configure
   exit 1
 fi
 cmake --build "$BUILD_DIR" -j "${JOBS:-2}"
+if [ "$WITH_DOC" = 1 ]; then
+  cmake --build "$BUILD_DIR" --target doc
+  echo "setup.sh: manual in $BUILD_DIR/doc/Mesh_untangling/html/index.html"
+fi
 echo "setup.sh: built in $BUILD_DIR"

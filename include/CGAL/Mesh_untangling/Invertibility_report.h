@@ -18,7 +18,7 @@ namespace Mesh_untangling {
 /// its target), never against a fixed sign.
 struct Invertibility_report
 {
-  std::size_t number_of_elements = 0;
+  std::size_t number_of_elements = 0; ///< elements checked
   /// elements whose exact orientation differs from the reference (zero counts as inverted); input defects excluded
   std::size_t inverted_elements = 0;
   /// interior vertex stars whose winding, rounded, is not 1 (2D: angle sum / 2π; 3D: solid angle sum / 4π)
@@ -45,8 +45,9 @@ struct Invertibility_report
   std::vector<std::size_t> non_manifold_vertex_ids;           ///< sorted
   std::vector<std::array<std::size_t, 2>> non_manifold_edges; ///< 3D, sorted pairs
 
-  /// extreme windings over the interior stars checked (vertices, and 3D edges); 1 when there is none
+  /// smallest winding over the interior stars checked (vertices, and 3D edges); 1 when there is none
   double min_covering = 1.;
+  /// largest winding over the interior stars checked (vertices, and 3D edges); 1 when there is none
   double max_covering = 1.;
   /// largest angle sum over a full turn among boundary stars checked; 0 when there is none
   double max_boundary_covering = 0.;

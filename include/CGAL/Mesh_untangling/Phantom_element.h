@@ -25,7 +25,7 @@ namespace Mesh_untangling {
 template <typename Vertex, typename Point>
 struct Phantom_element
 {
-  static constexpr int dimension = Ambient_dimension<Point>::value;
+  static constexpr int dimension = Ambient_dimension<Point>::value; ///< 2 (triangles) or 3 (tetrahedra)
 
   std::array<Vertex, dimension + 1> vertices;  ///< positively oriented with respect to `target`
   std::array<Point, dimension + 1> target;     ///< the shape the element is drawn toward, in the units of the targets of the mesh

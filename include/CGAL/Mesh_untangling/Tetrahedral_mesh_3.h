@@ -21,13 +21,15 @@ namespace Mesh_untangling {
 template <typename Point_3_>
 struct Tetrahedral_mesh_3
 {
-  using Point = Point_3_;
-  using Cell = std::array<std::size_t, 4>;
+  using Point = Point_3_;                    ///< the point type, a `Point_3` of a \cgal kernel
+  using Cell = std::array<std::size_t, 4>;   ///< the indices of the four vertices of a cell
 
-  std::vector<Point> points;
-  std::vector<Cell> cells;
+  std::vector<Point> points;  ///< the map: vertex `i` is at `points[i]`
+  std::vector<Cell> cells;    ///< the cells, inverted or flat ones included
 
+  /// appends a vertex at `p` and returns its index
   std::size_t add_vertex(const Point& p) { points.push_back(p); return points.size() - 1; }
+  /// appends the cell `(a, b, c, d)` and returns its index
   std::size_t add_cell(std::size_t a, std::size_t b, std::size_t c, std::size_t d)
   { cells.push_back(Cell{{a, b, c, d}}); return cells.size() - 1; }
 };

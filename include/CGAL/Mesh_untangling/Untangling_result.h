@@ -50,12 +50,12 @@ inline std::string to_string(Untangling_status status)
 /// predicates, relative to the orientation of each target element.
 struct Untangling_result
 {
-  Untangling_status status = Untangling_status::INVALID_INPUT;
+  Untangling_status status = Untangling_status::INVALID_INPUT; ///< how the run ended
   std::string message;                 ///< what went wrong (names the element or vertex where one is to blame); empty on success
 
-  std::size_t number_of_vertices = 0;
-  std::size_t number_of_elements = 0;
-  std::size_t number_of_fixed_vertices = 0;
+  std::size_t number_of_vertices = 0;       ///< vertices of the mesh (phantom vertices not counted)
+  std::size_t number_of_elements = 0;       ///< triangles or tetrahedra of the mesh (phantoms not counted)
+  std::size_t number_of_fixed_vertices = 0; ///< vertices whose position is never written
   std::size_t degenerate_targets_replaced = 0; ///< rest elements too flat to serve, replaced by regular ones
   std::size_t number_of_phantom_elements = 0;  ///< phantom elements added to the energy (free boundary protection)
   std::size_t number_of_phantom_vertices = 0;  ///< phantom vertices added as unknowns (3D irregular boundary stars)
@@ -77,13 +77,13 @@ struct Untangling_result
   bool input_returned = false;
 
   double min_scaled_det_before = 0;    ///< min over elements of det J (J relative to the target, targets scaled to the map's size)
-  double min_scaled_det_after = 0;
+  double min_scaled_det_after = 0;     ///< the same on the result, over the elements with a free vertex and the phantoms
   double max_shape_distortion = 0;     ///< max of tr(JᵀJ)/d / det(J)^(2/d) over positive elements (1 = similarity)
-  double mean_shape_distortion = 0;
+  double mean_shape_distortion = 0;    ///< mean of the shape distortion over positive elements
   double max_volume_distortion = 0;    ///< max of (det J + 1/det J)/2 over positive elements (1 = same size)
-  double mean_volume_distortion = 0;
+  double mean_volume_distortion = 0;   ///< mean of the volume distortion over positive elements
   double final_energy = 0;             ///< F(X, ε) at the last ε, normalized by the total target volume
-  double final_epsilon = 0;
+  double final_epsilon = 0;            ///< the regularization ε of the last ε step
 
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)
@@ -91,9 +91,10 @@ struct Untangling_result
   std::size_t outer_iterations = 0;    ///< ε steps
   std::size_t inner_iterations = 0;    ///< solver iterations, all ε steps together
   std::size_t energy_evaluations = 0;  ///< evaluations of F (with or without gradient)
-  double seconds = 0;
+  double seconds = 0;                  ///< wall-clock time of the run, checks included
   std::string solver;                  ///< name of the inner solver that ran
 
+  /// `true` when `status` is `SUCCESS`: no inverted element, no over-wound star or edge fan
   bool is_locally_invertible() const
   { return status == Untangling_status::SUCCESS; }
 };

@@ -54,7 +54,7 @@ namespace Mesh_untangling {
 template <std::size_t D>
 struct Boundary_self_intersection_report
 {
-  using Facet = std::array<std::size_t, D>;
+  using Facet = std::array<std::size_t, D>; ///< the vertex ids of a boundary facet, increasing
 
   /// facets of the simplex soup that belong to one simplex only
   std::size_t number_of_boundary_facets = 0;
@@ -105,6 +105,8 @@ std::vector<std::array<std::size_t, N - 1>> boundary_facets(const std::vector<st
 /// See the file documentation for what a simple boundary does and does not
 /// imply about global invertibility.
 ///
+/// \param positions the map: one point per vertex
+/// \param simplices the elements, each given by its vertex ids
 /// \param max_recorded_pairs how many intersecting pairs to list (all are counted)
 template <std::size_t D>
 Boundary_self_intersection_report<D>

@@ -81,6 +81,8 @@ std::size_t number_of_inverted_elements(const std::vector<std::array<double, D>>
 /// checked in fixed chunks, concurrently when TBB is linked, and the report,
 /// lists included, is the same for any number of threads.
 ///
+/// \param positions the map: one point per vertex
+/// \param simplices the elements, each given by its vertex ids
 /// \param reference_orientation +1 or -1 per simplex, the orientation of its
 ///        target (see `simplex_orientations()`); empty means all +1
 /// \param is_fixed one flag per vertex; empty means no fixed vertex
@@ -167,7 +169,7 @@ inline std::vector<double> vertex_covering_numbers_3(const std::vector<std::arra
 struct Edge_covering
 {
   std::array<std::size_t, 2> edge;  ///< smaller vertex id first
-  double covering;
+  double covering;                  ///< signed dihedral angle sum around the edge over 2π
   bool on_boundary;                 ///< the fan is open (the edge lies on a boundary face)
   bool is_manifold;                 ///< the fan is one cycle or one path of tetrahedra
 };

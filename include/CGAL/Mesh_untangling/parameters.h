@@ -52,6 +52,8 @@ enum class Solver
   LBFGS
 };
 
+/// \ingroup PkgMeshUntanglingRef
+/// The name of `s` as `solver_from_string()` and the command-line tool read it: "auto", "newton" or "lbfgs".
 inline std::string to_string(Solver s)
 {
   return s == Solver::LBFGS ? "lbfgs" : s == Solver::NEWTON ? "newton" : "auto";

@@ -33,6 +33,7 @@ struct Mesh_file
   /// empty for a mesh not read from a file. Writers ignore it.
   std::vector<std::size_t> simplex_lines;
 
+  /// the number of vertices: that of the rest or of the map, whichever has more
   std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }
 };
 

@@ -21,14 +21,17 @@ namespace IO {
 class Read_error : public std::runtime_error
 {
 public:
+  /// the error at `line` (1-based; 0: none) of `file`
   Read_error(std::string file, std::size_t line, std::string reason)
     : std::runtime_error(compose(file, line, reason)),
       file_(std::move(file)), line_(line), reason_(std::move(reason))
   {}
 
+  /// the file that could not be read
   const std::string& file() const noexcept { return file_; }
   /// 1-based; 0 when the error is not tied to a line.
   std::size_t line() const noexcept { return line_; }
+  /// what is wrong, without the file and line
   const std::string& reason() const noexcept { return reason_; }
 
 private:
@@ -49,12 +52,15 @@ private:
 class Write_error : public std::runtime_error
 {
 public:
+  /// the error writing `file`
   Write_error(std::string file, std::string reason)
     : std::runtime_error(file + ": " + reason),
       file_(std::move(file)), reason_(std::move(reason))
   {}
 
+  /// the file that could not be written
   const std::string& file() const noexcept { return file_; }
+  /// what went wrong, without the file
   const std::string& reason() const noexcept { return reason_; }
 
 private:

@@ -14,12 +14,13 @@ namespace IO {
 /// A named scalar field, one value per cell or per point, written along with a VTK mesh.
 struct VTK_field
 {
-  std::string name;
-  std::vector<double> values;
+  std::string name;             ///< the field's name in the file (no white space)
+  std::vector<double> values;   ///< one value per cell or per point, in their order
   bool integer = false;  ///< written as `int` (flags, counts): the values must be whole numbers
 };
 
 /// \ingroup PkgMeshUntanglingIO
+/// The fields written with a mesh (cell fields and point fields apart).
 typedef std::vector<VTK_field> VTK_fields;
 
 } // namespace IO
