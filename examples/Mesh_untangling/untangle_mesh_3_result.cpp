@@ -76,7 +76,7 @@ bool untangle_twisted_ball()
   const Mesh_domain domain = Mesh_domain::create_implicit_mesh_domain(ball, K::Sphere_3(CGAL::ORIGIN, 4.));
   namespace params = CGAL::parameters;
   const Criteria criteria(params::facet_angle = 25, params::facet_size = 0.3, params::facet_distance = 0.05,
-                          params::cell_radius_edge_ratio = 3, params::cell_size = 0.3);
+                          params::cell_radius_edge_ratio = 3, params::cell_size = 0.25);
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
 
   // Twist the boundary about the z axis (a quarter turn from bottom to top):

@@ -163,8 +163,8 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map}
 ///     \cgalParamDescription{the rest shape: the target of each cell is made of its vertices' rest points}
 ///     \cgalParamType{a readable property map `Triangulation::Vertex_handle` -> `Triangulation::Point` (or its bare `Point_3`)}
-///     \cgalParamDefault{each cell's current shape, mirrored where the cell is inverted
-///       (a cell's shape that is flat, or nearly so, is replaced by a regular tetrahedron)}
+///     \cgalParamDefault{a regular tetrahedron of the mean volume for every cell (pass the positions before
+///       the deformation to keep a graded mesh's sizes)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::cell_target_map}
 ///     \cgalParamDescription{the target tetrahedron of each cell, used instead of the rest shape}
@@ -211,7 +211,7 @@ untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& 
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
 ///     \cgalParamDescription{the rest shape, as for the `Triangulation_3` overload (with the triangulation's handles)}
-///     \cgalParamDefault{each cell's current shape, mirrored where the cell is inverted}
+///     \cgalParamDefault{a regular tetrahedron of the mean volume for every cell}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, theta, solver, target_scaling, continuation,
 ///     phantom_protection, phantom_elements, phantom_output, element_figures_output}
