@@ -24,6 +24,7 @@
 #include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -210,6 +211,24 @@ void test_delaunay()
   CHECK(r.number_of_fixed_vertices == hull.size());
   for(const auto& [v, p] : given)
     if(hull.count(v)) CHECK(v->point() == p);
+
+  // rest points and target cells are read: all of them in one point give no
+  // shape, which the untangling refuses, moving nothing
+  Delaunay flat_rest;
+  shaken_cube(flat_rest, 0.15, [](double x, double y, double z, std::mt19937&) { return Point_3(x, y, z); });
+  const Point_3 shaken = flat_rest.finite_vertices_begin()->point();
+  const auto one_point = boost::make_function_property_map<Delaunay::Vertex_handle>([](Delaunay::Vertex_handle) {
+    return Point_3(1, 2, 3);
+  });
+  MU::Untangling_result flat = CGAL::untangle_mesh(flat_rest, MU::parameters::rest_point_map(one_point));
+  CHECK(flat.status == MU::Untangling_status::INVALID_INPUT);
+  CHECK_MESSAGE(flat.message.find("every target simplex is degenerate") != std::string::npos, flat.message);
+  const auto one_cell = boost::make_function_property_map<Delaunay::Cell_handle>([](Delaunay::Cell_handle) {
+    return std::array<Point_3, 4>{{Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(2, 0, 0), Point_3(3, 0, 0)}};
+  });
+  flat = CGAL::untangle_mesh(flat_rest, MU::parameters::cell_target_map(one_cell));
+  CHECK_MESSAGE(flat.message.find("every target simplex is degenerate") != std::string::npos, flat.message);
+  CHECK(flat_rest.finite_vertices_begin()->point() == shaken);
 
   // the hull freed as well: phantoms keep the free boundary from folding over,
   // handed out with the triangulation's vertex handles
