@@ -9,7 +9,9 @@
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
+#include <CGAL/Mesh_untangling/internal/mesh_type_traits.h>
 #include <CGAL/Mesh_untangling/internal/named_parameters.h>
+#include <CGAL/Mesh_untangling/internal/triangulation_adaptors.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -115,7 +117,8 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///     \cgalParamDescription{as for the triangle mesh overload}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename TetrahedralComplex, typename T, typename Tag, typename Base>
+template <typename TetrahedralComplex, typename T, typename Tag, typename Base,
+          typename = std::enable_if_t<Mesh_untangling::internal::is_plain_tetrahedral_complex<TetrahedralComplex>()>>
 Mesh_untangling::Untangling_result
 untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Base>& np)
 {
@@ -136,10 +139,126 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
     });
 }
 
-template <typename P>
-Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_mesh_3<P>& tc)
+/// \ingroup PkgMeshUntanglingRef
+/// Untangles the finite cells of a 3D triangulation: its vertices' points
+/// are the (tangled) map and receive the result, as points of the
+/// triangulation's own type (a weighted point keeps its weight).  The
+/// triangulation's combinatorics is kept: it is no longer Delaunay (or
+/// regular) afterwards, only a valid embedding of the same cells.
+///
+/// \tparam Triangulation a `Triangulation_3`, `Delaunay_triangulation_3` or
+///   `Regular_triangulation_3` (or a class derived from one)
+///
+/// The vertex numbers in `Untangling_result::message` are positions in the
+/// order of first appearance in `finite_cell_handles()`.  A triangulation of
+/// dimension below 3 (empty, or of collinear or coplanar points) gives
+/// `Untangling_status::INVALID_INPUT`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed vertices: never moved}
+///     \cgalParamType{a readable property map `Triangulation::Vertex_handle` -> `bool`}
+///     \cgalParamDefault{the vertices on the convex hull}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map}
+///     \cgalParamDescription{the rest shape: the target of each cell is made of its vertices' rest points}
+///     \cgalParamType{a readable property map `Triangulation::Vertex_handle` -> `Triangulation::Point` (or its bare `Point_3`)}
+///     \cgalParamDefault{a regular tetrahedron of the mean volume for every cell (pass the positions before
+///       the deformation to keep a graded mesh's sizes)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::cell_target_map}
+///     \cgalParamDescription{the target tetrahedron of each cell, used instead of the rest shape}
+///     \cgalParamType{a readable property map `Triangulation::Cell_handle` -> `std::array<Point_3, 4>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, theta, solver, target_scaling, continuation}
+///     \cgalParamDescription{as for the triangle mesh overload}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::phantom_protection, phantom_elements, phantom_output, element_figures_output}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`; phantoms as
+///       `Mesh_untangling::Phantom_element<Triangulation::Vertex_handle, Point_3>`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename Triangulation, typename T, typename Tag, typename Base,
+          typename = std::enable_if_t<Mesh_untangling::internal::Is_triangulation_3<Triangulation>::value>, typename = void>
+Mesh_untangling::Untangling_result
+untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& np)
 {
-  return untangle_mesh(tc, parameters::default_values());
+  namespace MUI = Mesh_untangling::internal;
+  const MUI::Triangulation_cells<Triangulation> cells(MUI::finite_cells_of(tr));
+  return MUI::untangle_triangulation_cells(cells, MUI::triangulation_error(tr, "the triangulation"),
+                                           [&] { return MUI::convex_hull_flags(tr, cells); }, np);
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// Untangles the cells of a `Mesh_complex_3_in_triangulation_3` (the cells
+/// in the complex; the other cells of its triangulation are ignored): its
+/// vertices' points are the (tangled) map and receive the result, as points
+/// of the triangulation's own type (a weighted point keeps its weight).
+///
+/// \tparam C3T3 a `Mesh_complex_3_in_triangulation_3`
+///
+/// The vertex numbers in `Untangling_result::message` are positions in the
+/// order of first appearance in the cells in the complex.  A complex without
+/// a cell gives `Untangling_status::INVALID_INPUT`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed vertices: never moved}
+///     \cgalParamType{a readable property map `C3T3::Triangulation::Vertex_handle` -> `bool`}
+///     \cgalParamDefault{the vertices of the complex's facets (boundary and interfaces of the subdomains),
+///       of its edges (features) and its corners, and those on the boundary of its cells}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
+///     \cgalParamDescription{the rest shape, as for the `Triangulation_3` overload (with the triangulation's handles)}
+///     \cgalParamDefault{a regular tetrahedron of the mean volume for every cell}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, theta, solver, target_scaling, continuation,
+///     phantom_protection, phantom_elements, phantom_output, element_figures_output}
+///     \cgalParamDescription{as for the `Triangulation_3` overload}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename C3T3, typename T, typename Tag, typename Base,
+          typename = std::enable_if_t<Mesh_untangling::internal::Is_mesh_complex_3<C3T3>::value>, typename = void,
+          typename = void>
+Mesh_untangling::Untangling_result
+untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
+{
+  namespace MUI = Mesh_untangling::internal;
+  const MUI::Triangulation_cells<typename C3T3::Triangulation> cells(MUI::cells_in_complex_of(c3t3));
+  std::string error = MUI::triangulation_error(c3t3.triangulation(), "the complex's triangulation");
+  if(error.empty() && cells.number_of_cells() == 0) error = "the complex has no cell (no cell is in a subdomain)";
+  return MUI::untangle_triangulation_cells(cells, error, [&] { return MUI::complex_boundary_flags(c3t3, cells); },
+                                           np);
+}
+
+/// \cond SKIP_IN_MANUAL
+// A type that models none of the concepts above: say so, rather than fail
+// deep inside an overload that does not apply.
+template <typename Mesh, typename T, typename Tag, typename Base,
+          typename = std::enable_if_t<!Mesh_untangling::internal::is_accepted_3d_mesh<Mesh>()>, typename = void,
+          typename = void, typename = void>
+Mesh_untangling::Untangling_result
+untangle_mesh(Mesh&, const Named_function_parameters<T, Tag, Base>&)
+{
+  static_assert(Mesh_untangling::internal::is_accepted_3d_mesh<Mesh>(),
+                "CGAL::untangle_mesh(mesh, np): the mesh type models none of the accepted concepts: a "
+                "Triangulation_3 (or Delaunay_triangulation_3, Regular_triangulation_3), a "
+                "Mesh_complex_3_in_triangulation_3, or a TetrahedralComplex such as "
+                "Mesh_untangling::Tetrahedral_mesh_3 (num_vertices(mesh), num_cells(mesh), cell_vertex(mesh, c, i), "
+                "get(CGAL::vertex_point, mesh)); a triangle mesh is untangled through its uv map: "
+                "untangle_mesh(tm, uv_map, np)");
+  return Mesh_untangling::Untangling_result();
+}
+/// \endcond
+
+/// \ingroup PkgMeshUntanglingRef
+/// `untangle_mesh(mesh, parameters::default_values())`, for a `TetrahedralComplex`,
+/// a `Triangulation_3` or a `Mesh_complex_3_in_triangulation_3`.
+template <typename Mesh>
+Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
+{
+  return untangle_mesh(mesh, parameters::default_values());
 }
 
 /// \ingroup PkgMeshUntanglingRef
