@@ -8,11 +8,13 @@
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/version.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
 #include <CGAL/Mesh_untangling/internal/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <type_traits>
 
@@ -26,6 +28,9 @@ namespace CGAL {
 /// parametric domain: each face's target is its triangle laid flat
 /// isometrically (or given by `face_target_map`).
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
 /// \tparam VertexUVMap a read-write property map vertex -> `Point_2`, holding the initial map; receives the result
 ///
@@ -55,6 +60,13 @@ namespace CGAL {
 ///     \cgalParamType{`std::function<bool(const Mesh_untangling::Untangling_step&)>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::progress_callback}
+///     \cgalParamDescription{told the fraction of the run done, for a progress bar: 0 at the start, a
+///       non-decreasing estimate in [0, 1] after each eps step, 1 at the end; returning `false` cancels the
+///       run, which hands the input back unchanged with the status `Untangling_status::CANCELLED`}
+///     \cgalParamType{a callable `bool(double)`, e.g. `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, face_target_map}
 ///     \cgalParamDescription{see `CGAL/Mesh_untangling/parameters.h`}
 ///   \cgalParamNEnd
@@ -65,7 +77,7 @@ namespace CGAL {
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` is a triangle mesh.
-template <typename TriangleMesh, typename VertexUVMap,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = parameters::Default_named_parameters,
           typename = std::enable_if_t<!Mesh_untangling::internal::Is_named_parameters<VertexUVMap>::value>>
 Mesh_untangling::Untangling_result
@@ -91,7 +103,8 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
   return Mesh_untangling::internal::untangle_as_parameters_ask<2, vertex_descriptor, Point_2>(
     input, np, [&](vertex_descriptor v) { return adaptor.index_of(v); },
     [&](std::size_t i) { return adaptor.vertex(i); },
-    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); });
+    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); },
+    ConcurrencyTag());
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -100,6 +113,9 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 /// `cell_target_map`; without either, every target is a regular
 /// tetrahedron of the mean volume.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam TetrahedralComplex a model of `TetrahedralComplex`
 ///
 /// \cgalNamedParamsBegin
@@ -111,11 +127,12 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
 ///     \cgalParamDescription{target shapes: rest positions per vertex, or a target tetrahedron per cell}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, theta, solver, target_scaling}
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback, theta, solver, target_scaling}
 ///     \cgalParamDescription{as for the triangle mesh overload}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename TetrahedralComplex, typename T, typename Tag, typename Base>
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename TetrahedralComplex, typename T,
+          typename Tag, typename Base>
 Mesh_untangling::Untangling_result
 untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Base>& np)
 {
@@ -133,13 +150,14 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<3>& result) {
       Mesh_untangling::internal::write_back_tetrahedral(result, tc);
-    });
+    },
+    ConcurrencyTag());
 }
 
-template <typename P>
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename P>
 Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_mesh_3<P>& tc)
 {
-  return untangle_mesh(tc, parameters::default_values());
+  return untangle_mesh<ConcurrencyTag>(tc, parameters::default_values());
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -147,6 +165,9 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_me
 /// `Point_3` points with tetrahedra (each simplex a random access range of
 /// point indices).  The points are the (tangled) map and receive the result.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam PointRange a random access range of `Point_2` or `Point_3`
 /// \tparam SimplexRange a range of simplices, each a random access range of 3 (triangles) or 4 (tetrahedra) point indices
 ///
@@ -163,7 +184,7 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_me
 ///     \cgalParamType{a random access range of points of the map's type, or of `Point_3` with triangles}
 ///     \cgalParamDefault{regular simplices of the map's mean size}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback}
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback}
 ///     \cgalParamDescription{as for the triangle mesh overload}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, continuation, continuation_steps}
@@ -174,7 +195,7 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh_untangling::Tetrahedral_me
 ///       `Mesh_untangling::Phantom_element<std::size_t, Point>`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename PointRange, typename SimplexRange,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename PointRange, typename SimplexRange,
           typename NamedParameters = parameters::Default_named_parameters>
 Mesh_untangling::Untangling_result
 untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
@@ -202,7 +223,8 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<d>& result) {
       Mesh_untangling::internal::write_back_soup<d>(result, points);
-    });
+    },
+    ConcurrencyTag());
 }
 
 } // namespace CGAL
