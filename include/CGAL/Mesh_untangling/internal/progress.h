@@ -120,6 +120,7 @@ inline Untangling_options with_progress(const Untangling_options& options, Progr
 {
   if(!meter.active()) return options;
   Untangling_options metered = options;
+  metered.progress_step = [&meter](const Untangling_step& s) { return meter.step(s); };
   metered.callback = [callback = options.callback, &meter](const Untangling_step& s) {
     if(!meter.step(s)) return false;
     return !callback || callback(s);

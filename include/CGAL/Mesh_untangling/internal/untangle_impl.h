@@ -219,9 +219,11 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   try {
-    r = untangle_as_asked<d>(in, with_progress(options, progress), protection, phantoms_used);
+    const Untangling_options metered = with_progress(options, progress);
+    r = untangle_as_asked<d>(in, metered, protection, phantoms_used);
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
-    repair_locally_after<d>(in, given, options, r);
+    repair_locally_after<d>(in, given, metered, r);
+    if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   } catch(const std::bad_alloc&) {
     throw;   // the caller's to handle, as for any allocation
   } catch(const std::exception& e) {
