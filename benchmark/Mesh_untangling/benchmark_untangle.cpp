@@ -118,6 +118,7 @@ std::string short_status(MU::Untangling_status status)
     case MU::Untangling_status::NUMERICAL_FAILURE: return "numerical failure";
     case MU::Untangling_status::INVALID_INPUT: return "invalid input";
     case MU::Untangling_status::UNREPAIRABLE_DEFECTS_LEFT: return "input defects left";
+    case MU::Untangling_status::CANCELLED: return "cancelled";
   }
   return "unknown status";
 }

@@ -17,19 +17,24 @@
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/version.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <utility>
+
+#include <unistd.h>
 
 namespace IO = CGAL::Mesh_untangling::IO;
 namespace MU = CGAL::Mesh_untangling;
@@ -323,7 +328,65 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   out << j.dump(2) << "\n";
 }
 
-Run_options run_options(const Arguments& args)
+/// What the tool says on stderr while it runs: on a terminal, one progress
+/// bar redrawn in place (at most ten times a second); otherwise (a pipe, a
+/// log file) one line per eps step, ending with the fraction done.
+class Progress_display
+{
+public:
+  explicit Progress_display(bool terminal) : terminal_(terminal) {}
+  ~Progress_display() { end(); }
+
+  bool fraction(double f)
+  {
+    fraction_ = f;
+    if(terminal_) draw(f >= 1);
+    if(f >= 1) end();
+    return true;
+  }
+
+  void step(const MU::Untangling_step& s)
+  {
+    step_ = s;
+    if(terminal_) { draw(false); return; }
+    char motion[48] = "";
+    if(s.motion < 1) std::snprintf(motion, sizeof motion, "  (continuation, motion %.4g)", s.motion);
+    std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  (%zu iterations, %zu evaluations)  %.2f s%s%s  %3.0f%%\n",
+                 s.step, s.epsilon, s.min_det, s.non_positive, s.energy, s.inner_iterations, s.energy_evaluations, s.seconds,
+                 s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "",
+                 motion, 100 * fraction_);
+  }
+
+private:
+  void draw(bool now)
+  {
+    const auto time = std::chrono::steady_clock::now();
+    if(!now && drawn_ && time - last_draw_ < std::chrono::milliseconds(100)) return;
+    last_draw_ = time;
+    drawn_ = true;
+    constexpr int width = 30;
+    const int filled = static_cast<int>(width * fraction_);
+    const std::string bar = std::string(filled, '#') + std::string(width - filled, '.');
+    // "\033[K" clears what a longer line drawn before left
+    std::fprintf(stderr, "\r[%s] %3.0f%%  step %zu  inverted %zu%s\033[K", bar.c_str(), 100 * fraction_, step_.step,
+                 step_.non_positive, step_.motion < 1 ? "  (continuation)" : "");
+    std::fflush(stderr);
+  }
+
+  void end()
+  {
+    if(drawn_) std::fputc('\n', stderr);
+    drawn_ = false;
+  }
+
+  bool terminal_;
+  double fraction_ = 0;
+  MU::Untangling_step step_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_draw_;
+};
+
+Run_options run_options(const Arguments& args, Progress_display* display)
 {
   Run_options options;
   options.solver = *MU::solver_from_string(args.solver);   // (CLI11 admits only the solvers' names)
@@ -335,15 +398,10 @@ Run_options run_options(const Arguments& args)
                        : args.continuation == "always" ? MU::Continuation::ALWAYS
                                                        : MU::Continuation::AUTOMATIC;
   options.continuation_steps = args.continuation_steps;
-  if(!args.quiet)
-    options.progress = [](const MU::Untangling_step& s) {
-      char motion[48] = "";
-      if(s.motion < 1) std::snprintf(motion, sizeof motion, "  (continuation, motion %.4g)", s.motion);
-      std::fprintf(stderr, "step %3zu  eps %9.3e  min det J %10.3e  inverted %zu  energy %.6g  (%zu iterations, %zu evaluations)  %.2f s%s%s\n",
-                   s.step, s.epsilon, s.min_det, s.non_positive, s.energy, s.inner_iterations, s.energy_evaluations, s.seconds,
-                   s.stage == 1 ? "  (regular targets)" : s.stage == 2 ? "  (given targets, from a valid map)" : "",
-                   motion);
-    };
+  if(display) {
+    options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
+    options.progress_fraction = [display](double f) { return display->fraction(f); };
+  }
   return options;
 }
 
@@ -440,12 +498,31 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   return verdict;
 }
 
+/// Why a run that did not end locally invertible stopped, in a few words.
+std::string reason_stopped(MU::Untangling_status status)
+{
+  switch(status) {
+    case MU::Untangling_status::TIME_LIMIT_REACHED: return "time limit reached";
+    case MU::Untangling_status::INVERTED_ELEMENTS_LEFT: return "inverted elements left when the solver gave up";
+    case MU::Untangling_status::COVERINGS_LEFT: return "over-wound stars left";
+    case MU::Untangling_status::STOPPED_BY_CALLBACK: return "stopped";
+    case MU::Untangling_status::CANCELLED: return "cancelled";
+    case MU::Untangling_status::NUMERICAL_FAILURE: return "numerical failure";
+    case MU::Untangling_status::UNREPAIRABLE_DEFECTS_LEFT: return "defects with only fixed vertices left";
+    case MU::Untangling_status::INVALID_INPUT: return "invalid input";
+    case MU::Untangling_status::SUCCESS: return "lost on writing the coordinates";
+  }
+  return "unknown";
+}
+
 void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run, const Verdict& verdict)
 {
   if(!args.quiet) {
     const MU::Untangling_result& r = run.result;
+    const std::string verdict_text =
+      verdict.locally_invertible ? "locally invertible" : "NOT locally invertible (" + reason_stopped(r.status) + ")";
     std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu, edges %zu, input defects %zu, "
-                 "phantoms %zu, %.2f s\n", verdict.locally_invertible ? "locally invertible" : "NOT locally invertible",
+                 "phantoms %zu, %.2f s\n", verdict_text.c_str(),
                  r.inverted_before, verdict.inverted, verdict.overwound_vertices, verdict.overwound_edges,
                  verdict.input_defects, r.number_of_phantom_elements, r.seconds);
     if(!verdict.locally_invertible)
@@ -490,7 +567,10 @@ int run(const Arguments& args)
     run.input_picture = svg_map_of(mesh, run.fixed);
     run.input_picture->title = args.input + " (input)";
   }
-  run.result = untangle_mesh_file(mesh, run.fixed, run_options(args), &run.record);
+  std::unique_ptr<Progress_display> display;
+  if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
+  run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, display.get()), &run.record);
+  display.reset();
   const Verdict verdict = write_outputs(args, mesh, run, temporaries, files);
   print_summary(args, mesh, run, verdict);
   if(verdict.locally_invertible) return 0;
@@ -570,10 +650,13 @@ int main(int argc, char** argv)
                  "cell field), .mesh, .off or .obj");
   app.add_option("--threads", args.threads, "at most N threads (default: every core); the result is the same, "
                  "bit for bit, with any number")->check(CLI::Range(1, max_thread_count));
-  app.add_flag("-q,--quiet", args.quiet, "no progress on stderr");
+  app.add_flag("-q,--quiet", args.quiet, "no progress on stderr (a bar on a terminal, else a line per eps step)");
+  app.set_version_flag("-V,--version", std::string("untangle_mesh ") + CGAL_MESH_UNTANGLING_VERSION);
   try {
     app.parse(argc, argv);
   } catch(const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch(const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch(const CLI::ParseError& e) {
     app.exit(e);

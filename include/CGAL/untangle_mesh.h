@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/version.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
 #include <CGAL/Mesh_untangling/internal/mesh_type_traits.h>
 #include <CGAL/Mesh_untangling/internal/named_parameters.h>
@@ -15,6 +16,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <type_traits>
 
@@ -28,6 +30,9 @@ namespace CGAL {
 /// parametric domain: each face's target is its triangle laid flat
 /// isometrically (or given by `face_target_map`).
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces
 /// \tparam VertexUVMap a read-write property map vertex -> `Point_2`, holding the initial map; receives the result
 ///
@@ -57,6 +62,13 @@ namespace CGAL {
 ///     \cgalParamType{`std::function<bool(const Mesh_untangling::Untangling_step&)>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::progress_callback}
+///     \cgalParamDescription{told the fraction of the run done, for a progress bar: 0 at the start, a
+///       non-decreasing estimate in [0, 1] after each eps step, 1 at the end; returning `false` cancels the
+///       run, which hands the input back unchanged with the status `Untangling_status::CANCELLED`}
+///     \cgalParamType{a callable `bool(double)`, e.g. `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, face_target_map}
 ///     \cgalParamDescription{see `CGAL/Mesh_untangling/parameters.h`}
 ///   \cgalParamNEnd
@@ -67,7 +79,7 @@ namespace CGAL {
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` is a triangle mesh.
-template <typename TriangleMesh, typename VertexUVMap,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = parameters::Default_named_parameters,
           typename = std::enable_if_t<!Mesh_untangling::internal::Is_named_parameters<VertexUVMap>::value>>
 Mesh_untangling::Untangling_result
@@ -93,7 +105,8 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
   return Mesh_untangling::internal::untangle_as_parameters_ask<2, vertex_descriptor, Point_2>(
     input, np, [&](vertex_descriptor v) { return adaptor.index_of(v); },
     [&](std::size_t i) { return adaptor.vertex(i); },
-    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); });
+    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); },
+    ConcurrencyTag());
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -102,6 +115,9 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 /// `cell_target_map`; without either, every target is a regular
 /// tetrahedron of the mean volume.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam TetrahedralComplex a model of `TetrahedralComplex`
 ///
 /// \cgalNamedParamsBegin
@@ -113,11 +129,12 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
 ///     \cgalParamDescription{target shapes: rest positions per vertex, or a target tetrahedron per cell}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, theta, solver, target_scaling}
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback, theta, solver, target_scaling}
 ///     \cgalParamDescription{as for the triangle mesh overload}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename TetrahedralComplex, typename T, typename Tag, typename Base,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename TetrahedralComplex, typename T,
+          typename Tag, typename Base,
           typename = std::enable_if_t<Mesh_untangling::internal::is_plain_tetrahedral_complex<TetrahedralComplex>()>>
 Mesh_untangling::Untangling_result
 untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Base>& np)
@@ -136,7 +153,8 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<3>& result) {
       Mesh_untangling::internal::write_back_tetrahedral(result, tc);
-    });
+    },
+    ConcurrencyTag());
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -146,6 +164,7 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
 /// triangulation's combinatorics is kept: it is no longer Delaunay (or
 /// regular) afterwards, only a valid embedding of the same cells.
 ///
+/// \tparam ConcurrencyTag as for the triangle mesh overload
 /// \tparam Triangulation a `Triangulation_3`, `Delaunay_triangulation_3` or
 ///   `Regular_triangulation_3` (or a class derived from one)
 ///
@@ -179,14 +198,15 @@ untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Ba
 ///       `Mesh_untangling::Phantom_element<Triangulation::Vertex_handle, Point_3>`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename Triangulation, typename T, typename Tag, typename Base,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename Triangulation, typename T, typename Tag,
+          typename Base,
           typename = std::enable_if_t<Mesh_untangling::internal::Is_triangulation_3<Triangulation>::value>, typename = void>
 Mesh_untangling::Untangling_result
 untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& np)
 {
   namespace MUI = Mesh_untangling::internal;
   const MUI::Triangulation_cells<Triangulation> cells(MUI::finite_cells_of(tr));
-  return MUI::untangle_triangulation_cells(cells, MUI::triangulation_error(tr, "the triangulation"),
+  return MUI::untangle_triangulation_cells<ConcurrencyTag>(cells, MUI::triangulation_error(tr, "the triangulation"),
                                            [&] { return MUI::convex_hull_flags(tr, cells); }, np);
 }
 
@@ -196,6 +216,7 @@ untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& 
 /// vertices' points are the (tangled) map and receive the result, as points
 /// of the triangulation's own type (a weighted point keeps its weight).
 ///
+/// \tparam ConcurrencyTag as for the triangle mesh overload
 /// \tparam C3T3 a `Mesh_complex_3_in_triangulation_3`
 ///
 /// The vertex numbers in `Untangling_result::message` are positions in the
@@ -218,7 +239,7 @@ untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& 
 ///     \cgalParamDescription{as for the `Triangulation_3` overload}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename C3T3, typename T, typename Tag, typename Base,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename C3T3, typename T, typename Tag, typename Base,
           typename = std::enable_if_t<Mesh_untangling::internal::Is_mesh_complex_3<C3T3>::value>, typename = void,
           typename = void>
 Mesh_untangling::Untangling_result
@@ -228,14 +249,15 @@ untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
   const MUI::Triangulation_cells<typename C3T3::Triangulation> cells(MUI::cells_in_complex_of(c3t3));
   std::string error = MUI::triangulation_error(c3t3.triangulation(), "the complex's triangulation");
   if(error.empty() && cells.number_of_cells() == 0) error = "the complex has no cell (no cell is in a subdomain)";
-  return MUI::untangle_triangulation_cells(cells, error, [&] { return MUI::complex_boundary_flags(c3t3, cells); },
-                                           np);
+  return MUI::untangle_triangulation_cells<ConcurrencyTag>(cells, error,
+                                                           [&] { return MUI::complex_boundary_flags(c3t3, cells); },
+                                                           np);
 }
 
 /// \cond SKIP_IN_MANUAL
 // A type that models none of the concepts above: say so, rather than fail
 // deep inside an overload that does not apply.
-template <typename Mesh, typename T, typename Tag, typename Base,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename Mesh, typename T, typename Tag, typename Base,
           typename = std::enable_if_t<!Mesh_untangling::internal::is_accepted_3d_mesh<Mesh>()>, typename = void,
           typename = void, typename = void>
 Mesh_untangling::Untangling_result
@@ -255,10 +277,10 @@ untangle_mesh(Mesh&, const Named_function_parameters<T, Tag, Base>&)
 /// \ingroup PkgMeshUntanglingRef
 /// `untangle_mesh(mesh, parameters::default_values())`, for a `TetrahedralComplex`,
 /// a `Triangulation_3` or a `Mesh_complex_3_in_triangulation_3`.
-template <typename Mesh>
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename Mesh>
 Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
 {
-  return untangle_mesh(mesh, parameters::default_values());
+  return untangle_mesh<ConcurrencyTag>(mesh, parameters::default_values());
 }
 
 /// \ingroup PkgMeshUntanglingRef
@@ -266,6 +288,9 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
 /// `Point_3` points with tetrahedra (each simplex a random access range of
 /// point indices).  The points are the (tangled) map and receive the result.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the calling thread alone), `CGAL::Parallel_tag` (TBB's
+///   threads; a `static_assert` without TBB) or `CGAL::Parallel_if_available_tag` (the default: parallel when
+///   TBB is linked).  Every tag gives the same result, bit for bit.
 /// \tparam PointRange a random access range of `Point_2` or `Point_3`
 /// \tparam SimplexRange a range of simplices, each a random access range of 3 (triangles) or 4 (tetrahedra) point indices
 ///
@@ -282,7 +307,7 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
 ///     \cgalParamType{a random access range of points of the map's type, or of `Point_3` with triangles}
 ///     \cgalParamDefault{regular simplices of the map's mean size}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback}
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback}
 ///     \cgalParamDescription{as for the triangle mesh overload}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::theta, solver, target_scaling, continuation, continuation_steps}
@@ -293,7 +318,7 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
 ///       `Mesh_untangling::Phantom_element<std::size_t, Point>`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename PointRange, typename SimplexRange,
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename PointRange, typename SimplexRange,
           typename NamedParameters = parameters::Default_named_parameters>
 Mesh_untangling::Untangling_result
 untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
@@ -321,7 +346,8 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<d>& result) {
       Mesh_untangling::internal::write_back_soup<d>(result, points);
-    });
+    },
+    ConcurrencyTag());
 }
 
 } // namespace CGAL

@@ -196,6 +196,11 @@ check "square: one progress line per step" \
   [ "$(grep -c '^step ' sq.err)" = "$(json_get sq.json outer_iterations)" ]
 check "square: at least one step" json_positive sq.json outer_iterations
 check "square: summary line on stderr" err_has sq '^locally invertible: inverted [1-9][0-9]* -> 0'
+# Not a terminal: each step's line ends with the fraction done, which never goes down.
+check "square: progress lines end with a percentage" \
+  [ "$(grep -c '^step .* [0-9]*%$' sq.err)" = "$(json_get sq.json outer_iterations)" ]
+check "square: the percentages never go down" \
+  awk '/^step / { p = $NF + 0; if(p < last) exit 1; last = p } END { exit last > 0 ? 0 : 1 }' sq.err
 check "square: nothing on stdout" empty sq.out
 check "square: handles unchanged" [ "$(handle_rows square.input)" = "$(handle_rows square-untangled.input)" ]
 check "square: 160 handle rows compared" [ "$(handle_rows square.input | wc -l)" = 160 ]
@@ -717,6 +722,16 @@ if [ -n "$DATA" ] && [ -f "$rocker/parameter.vtk" ]; then
   check "one published step: exit 1" rc_is better 1
   check "one published step: result kept" json_is better.json input_returned false
   check "one published step: fewer inverted than the input" [ "$(json_get better.json inverted_after)" -lt 502 ]
+fi
+# Stopped by the clock (stage 1's restarts, the continuation): the status
+# and the summary line say so, not "inverted elements are left after the
+# iteration budget".
+if [ -n "$DATA" ] && [ -f "$rocker/parameter.vtk" ]; then
+  run clock "$rocker/parameter.vtk" --rest "$rocker/object.vtk" --fixed "$rocker/handles.txt" --time-limit 2 \
+    -o clock.vtk --report clock.json
+  check "time limit: exit 1" rc_is clock 1
+  check "time limit: status" json_is clock.json status '"the time limit was reached before the map became locally invertible"'
+  check "time limit: the summary line says why" err_has clock '^NOT locally invertible \(time limit reached\): inverted 502 -> '
 fi
 # A failed run hands back the least tangled map it went through: joint
 # (1,337 inverted tets) has 2 non-positive tets after step 50 and over

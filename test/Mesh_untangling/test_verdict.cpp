@@ -306,10 +306,30 @@ void test_messages()
   CHECK_MESSAGE(r.status == Status::STOPPED_BY_CALLBACK && contains(r.message, "inverted elements"), describe(r));
 }
 
+/// The clock decides the status whenever it ran out, also when the last eps
+/// loop ended on a stall rather than on it (stage 1's restarts and the
+/// continuation's steps stop on the clock between loops).
+void test_final_status()
+{
+  using MU::internal::final_status;
+  MU::Invertibility_report tangled;
+  tangled.inverted_elements = 3;
+  CHECK(final_status(tangled, false, false, true) == Status::TIME_LIMIT_REACHED);
+  CHECK(final_status(tangled, false, true, true) == Status::TIME_LIMIT_REACHED);
+  CHECK(final_status(tangled, false, true, false) == Status::STOPPED_BY_CALLBACK);
+  CHECK(final_status(tangled, false, false, false) == Status::INVERTED_ELEMENTS_LEFT);
+  CHECK(final_status(tangled, true, false, true) == Status::NUMERICAL_FAILURE);
+  MU::Invertibility_report wound;
+  wound.overwound_interior_vertices = 1;
+  CHECK(final_status(wound, false, false, false) == Status::COVERINGS_LEFT);
+  CHECK(final_status(MU::Invertibility_report(), false, true, true) == Status::SUCCESS);
+}
+
 } // namespace
 
 int main()
 {
+  test_final_status();
   test_unrepairable();
   test_scales();
   test_isolated_vertex();

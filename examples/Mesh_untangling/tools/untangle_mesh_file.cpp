@@ -110,7 +110,8 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
                               MU::parameters::solver(options.solver,
                               MU::parameters::phantom_protection(options.phantoms,
                               MU::parameters::continuation(options.continuation,
-                              MU::parameters::continuation_steps(options.continuation_steps, np)))));
+                              MU::parameters::continuation_steps(options.continuation_steps,
+                              MU::parameters::progress_callback(options.progress_fraction, np))))));
     if(!record) return CGAL::untangle_simplex_soup(points, simplices, package_np);
     return CGAL::untangle_simplex_soup(points, simplices,
                                        MU::parameters::phantom_output(std::back_inserter(phantoms),

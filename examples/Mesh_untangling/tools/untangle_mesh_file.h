@@ -42,6 +42,8 @@ struct Run_options
   CGAL::Mesh_untangling::Continuation continuation = CGAL::Mesh_untangling::Continuation::AUTOMATIC;
   std::size_t continuation_steps = CGAL::Mesh_untangling::default_continuation_steps;
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
+  /// told the fraction of the run done (Mesh_untangling::parameters::progress_callback); false cancels
+  std::function<bool(double)> progress_fraction;
 };
 
 /// The problem does not make sense (names what is wrong).

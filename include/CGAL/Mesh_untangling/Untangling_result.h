@@ -23,7 +23,10 @@ enum class Untangling_status
   /// every defect a free vertex could repair is gone, but inverted elements
   /// (or over-wound stars) whose vertices are all fixed are left: nothing
   /// can repair them (`input_defects`, `input_defect_stars`)
-  UNREPAIRABLE_DEFECTS_LEFT
+  UNREPAIRABLE_DEFECTS_LEFT,
+  /// the `progress_callback` returned `false`: the run was cancelled and the
+  /// input map handed back unchanged (`input_returned`)
+  CANCELLED
 };
 
 /// \ingroup PkgMeshUntanglingRef
@@ -40,6 +43,7 @@ inline std::string to_string(Untangling_status status)
     case Untangling_status::INVALID_INPUT: return "invalid input";
     case Untangling_status::UNREPAIRABLE_DEFECTS_LEFT:
       return "inverted elements or over-wound stars whose vertices are all fixed are left: nothing can repair them";
+    case Untangling_status::CANCELLED: return "the progress callback cancelled the run: the input map is handed back";
   }
   return "unknown status";
 }

@@ -29,6 +29,7 @@ enum mesh_untangling_phantom_output_t { mesh_untangling_phantom_output };
 enum mesh_untangling_continuation_t { mesh_untangling_continuation };
 enum mesh_untangling_continuation_steps_t { mesh_untangling_continuation_steps };
 enum mesh_untangling_element_figures_output_t { mesh_untangling_element_figures_output };
+enum mesh_untangling_progress_callback_t { mesh_untangling_progress_callback };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -165,6 +166,16 @@ CGAL_MESH_UNTANGLING_PARAMETER(continuation_steps, mesh_untangling_continuation_
 /// per element of the map handed back, in the input's order, then one per
 /// phantom element used (in the order of `phantom_output`).
 CGAL_MESH_UNTANGLING_PARAMETER(element_figures_output, mesh_untangling_element_figures_output_t)
+
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A callable `bool(double fraction)`, e.g. `std::function<bool(double)>`:
+/// told the fraction of the run done, in [0, 1], never smaller than the
+/// fraction it was told before: 0 when the run starts, an estimate after
+/// every eps step, 1 when the run has ended (not after a cancellation, and
+/// not for an input refused as INVALID_INPUT).  Returning `false` cancels
+/// the run: it stops at the end of the current eps step and hands the input
+/// map back unchanged, with the status `Untangling_status::CANCELLED`.
+CGAL_MESH_UNTANGLING_PARAMETER(progress_callback, mesh_untangling_progress_callback_t)
 
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 

@@ -27,6 +27,10 @@ struct Untangling_options
   double max_seconds = std::numeric_limits<double>::infinity();
   Target_scaling scaling = Target_scaling::AUTOMATIC;
   std::function<bool(const Untangling_step&)> callback;   // false stops the run
+  std::function<bool(double)> progress;   // the fraction done (progress.h); false cancels the run
+  // The progress meter alone (with_progress() in progress.h): what the
+  // stages that hide their eps steps from `callback` (local_repair.h) still feed.
+  std::function<bool(const Untangling_step&)> progress_step;
   Continuation continuation = Continuation::AUTOMATIC;
   std::size_t continuation_steps = default_continuation_steps;
   // When the continuation will follow a failed direct untangling, a stall of

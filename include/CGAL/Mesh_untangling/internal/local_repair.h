@@ -163,7 +163,7 @@ bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, 
       o.theta = theta;
       o.max_seconds = seconds_left();
       o.max_outer_iterations = std::min(steps_left, local_repair_eps_steps);
-      o.callback = nullptr;
+      o.callback = options.progress_step;   // the meter alone: the caller's callback is not told the local runs' steps
       o.give_up_on_stall = false;
       Untangling_result r;
       const bool repaired = untangle_region<d>(in, region, o, r);
@@ -226,7 +226,7 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
     Untangling_options patient = within_budget(work);
     patient.max_seconds = seconds_left();
     patient.max_outer_iterations = std::min(patient.max_outer_iterations, patient_rerun_eps_steps);
-    patient.callback = nullptr;
+    patient.callback = options.progress_step;
     patient.stage_0_never_stalls = true;
     const Untangling_result first = untangle_directly<d>(rerun, patient);
     add_local_work(work, first);

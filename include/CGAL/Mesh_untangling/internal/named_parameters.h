@@ -10,6 +10,7 @@
 #include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/concurrency.h>
 #include <CGAL/Mesh_untangling/internal/element_figures.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
 #include <CGAL/Mesh_untangling/internal/untangle_impl.h>
@@ -48,6 +49,8 @@ Untangling_options read_options(const NamedParameters& np)
                                    std::numeric_limits<double>::infinity());
   o.callback = choose_parameter(get_parameter(np, internal_np::callback),
                                 std::function<bool(const Untangling_step&)>());
+  o.progress = choose_parameter(get_parameter(np, internal_np::mesh_untangling_progress_callback),
+                                std::function<bool(double)>());
   o.continuation = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation),
                                     Continuation::AUTOMATIC);
   o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
@@ -78,12 +81,13 @@ Protection_request<d> read_protection(const NamedParameters& np, const IndexOf& 
 /// named parameters `np` ask; `write_back(input)` puts the result into the
 /// caller's mesh unless the input was invalid.  `vertex_of` turns the
 /// solver's vertex indices back into the caller's vertices (`Vertex`), for
-/// the phantoms handed out as `Phantom_element<Vertex, Point>`.
+/// the phantoms handed out as `Phantom_element<Vertex, Point>`.  The run
+/// uses the threads `ConcurrencyTag` allows (concurrency.h).
 template <int d, typename Vertex, typename Point, typename NamedParameters, typename IndexOf, typename VertexOf,
-          typename WriteBack>
+          typename WriteBack, typename ConcurrencyTag = Parallel_if_available_tag>
 Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const NamedParameters& np,
                                              const IndexOf& index_of, const VertexOf& vertex_of,
-                                             const WriteBack& write_back)
+                                             const WriteBack& write_back, ConcurrencyTag = ConcurrencyTag())
 {
   using CGAL::parameters::get_parameter;
   const Untangling_options options = read_options(np);
@@ -95,7 +99,8 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
   Untangling_input<d> given;
   if constexpr(wants_figures) given = input;
   Phantom_elements<d> phantoms;
-  const Untangling_result result = untangle<d>(input, options, protection, &phantoms);
+  const Untangling_result result =
+    run_with_concurrency<ConcurrencyTag>([&] { return untangle<d>(input, options, protection, &phantoms); });
   if(result.status == Untangling_status::INVALID_INPUT) return result;
   write_back(input);
   if constexpr(wants_phantoms)

@@ -223,7 +223,7 @@ std::vector<typename C3T3::Triangulation::Cell_handle> cells_in_complex_of(const
 /// Untangles `cells` as `np` asks, the vertices that `default_fixed()` flags
 /// fixed unless `np` has a `vertex_is_constrained_map`; `error`, when not
 /// empty, is the reason the triangulation cannot be untangled.
-template <typename Triangulation, typename NamedParameters, typename DefaultFixed>
+template <typename ConcurrencyTag, typename Triangulation, typename NamedParameters, typename DefaultFixed>
 Untangling_result untangle_triangulation_cells(const Triangulation_cells<Triangulation>& cells, const std::string& error,
                                                const DefaultFixed& default_fixed, const NamedParameters& np)
 {
@@ -243,7 +243,7 @@ Untangling_result untangle_triangulation_cells(const Triangulation_cells<Triangu
                                 get_parameter(np, internal_np::mesh_untangling_cell_target_map));
   return untangle_as_parameters_ask<3, Vertex_handle, typename Triangulation_cells<Triangulation>::Bare_point>(
     input, np, [&](Vertex_handle v) { return cells.index_of(v); }, [&](std::size_t i) { return cells.vertex(i); },
-    [&](const Untangling_input<3>& result) { cells.write_back(result); });
+    [&](const Untangling_input<3>& result) { cells.write_back(result); }, ConcurrencyTag());
 }
 
 } // namespace internal

@@ -11,6 +11,7 @@
 
 #include <CGAL/Mesh_untangling/internal/continuation.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
+#include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
@@ -158,6 +159,32 @@ inline std::string what_is_left(const Untangling_result& r)
   return text + ")";
 }
 
+/// What a run that the progress callback cancelled hands back: the input
+/// map `given`, described as a run's result (`work`: what it cost).
+template <int d>
+Untangling_result cancelled_run(Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
+                                const Untangling_options& options, const Untangling_result& work,
+                                Phantom_elements<d>* phantoms_used)
+{
+  in.positions = given;
+  if(phantoms_used) *phantoms_used = Phantom_elements<d>();
+  Untangling_result r = input_figures<d>(in, options);
+  r.number_of_vertices = in.positions.size();
+  r.number_of_elements = in.elements.size();
+  r.solver = work.solver.empty() ? to_string(options.solver) : work.solver;
+  add_work(r, work);
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  r.number_of_fixed_vertices = P.number_of_fixed_vertices;
+  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
+  record_verdict(check_mesh<d>(in, P.reference_orientation, is_fixed), r);
+  r.min_scaled_det_after = r.min_scaled_det_before;
+  measure_quality(P, r);
+  r.input_returned = true;
+  r.status = Untangling_status::CANCELLED;
+  r.message = to_string(r.status);
+  return r;
+}
+
 /// Untangles `in.positions` in place (free vertices only), as
 /// `options.continuation` asks: directly from the given map, by
 /// continuation from the rest shape, or the latter when the former does not
@@ -184,9 +211,14 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
   Untangling_result r;
+  Progress_meter progress(options.progress, options);
+  if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   try {
-    r = untangle_as_asked<d>(in, options, protection, phantoms_used);
-    repair_locally_after<d>(in, given, options, r);
+    const Untangling_options metered = with_progress(options, progress);
+    r = untangle_as_asked<d>(in, metered, protection, phantoms_used);
+    if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
+    repair_locally_after<d>(in, given, metered, r);
+    if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   } catch(const std::bad_alloc&) {
     throw;   // the caller's to handle, as for any allocation
   } catch(const std::exception& e) {
@@ -205,6 +237,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);
+  progress.finish();
   return r;
 }
 

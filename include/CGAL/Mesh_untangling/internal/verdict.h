@@ -135,13 +135,17 @@ inline std::string unrepairable_defects_message(const Invertibility_report& repo
 
 /// How a run ended: SUCCESS exactly when the exact checks find the map
 /// locally invertible; otherwise why the run stopped, else what is left.
+/// The clock decides whenever it ran out, whether or not the last eps loop
+/// saw it: stage 1's restarts and the continuation's steps stop on it
+/// between loops, where `stopped` is not set, and such runs read
+/// "inverted elements are left after the iteration budget".
 inline Untangling_status final_status(const Invertibility_report& report, bool numerical_failure, bool stopped,
                                       bool out_of_time)
 {
   if(report.is_locally_invertible()) return Untangling_status::SUCCESS;
   if(report.has_no_repairable_defect()) return Untangling_status::UNREPAIRABLE_DEFECTS_LEFT;
   if(numerical_failure) return Untangling_status::NUMERICAL_FAILURE;
-  if(stopped && out_of_time) return Untangling_status::TIME_LIMIT_REACHED;
+  if(out_of_time) return Untangling_status::TIME_LIMIT_REACHED;
   if(stopped) return Untangling_status::STOPPED_BY_CALLBACK;
   if(report.inverted_elements > 0) return Untangling_status::INVERTED_ELEMENTS_LEFT;
   return Untangling_status::COVERINGS_LEFT;
