@@ -492,12 +492,13 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
       solved += r.refined->success;
       if(r.refined->success) {
         ++refined;
-        added.push_back(std::stod(r.refined->get("vertices_added", "0")));
+        const double vertices = std::stod(r.refined->get("vertices_added", "0"));
+        if(vertices > 0) added.push_back(vertices);
       }
     }
     if(std::none_of(rows.begin(), rows.end(), [](const Row& r) { return r.refined != nullptr; })) break;
     out << "\n" << solvers[s] << " with --refine solved " << solved << " of " << cases.size() << " cases, "
-        << refined << " of them by refinement";
+        << refined << " of them in the run with refinement, " << added.size() << " with new vertices";
     if(!added.empty())
       out << " (vertices added: median " << format_plain(median(added)) << ", max "
           << format_plain(*std::max_element(added.begin(), added.end())) << ")";
