@@ -22,6 +22,8 @@
 // the elements that run leaves inverted.  All of it within the caller's
 // time, within the budget of added vertices, and each untangling within the
 // caller's eps-step budget.
+// Once the map is untangled, each split is undone in turn (the latest
+// first) and kept undone when the local phase untangles the map without it.
 // The refinement is kept only when it ends locally invertible; otherwise
 // the fixed-connectivity result is handed back unchanged.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_REFINEMENT_LOCAL_REFINEMENT_H
@@ -93,6 +95,45 @@ std::vector<Edge> edges_to_split(const Untangling_input<d>& in, const std::vecto
   return edges;
 }
 
+/// Whether some element of `in` has both ends of `e`.
+template <int d>
+bool has_edge(const Untangling_input<d>& in, const Edge& e)
+{
+  for(const auto& s : in.elements)
+    if(std::find(s.begin(), s.end(), e[0]) != s.end() && std::find(s.begin(), s.end(), e[1]) != s.end()) return true;
+  return false;
+}
+
+/// `in` refined by `splits` (the vertices they added are those of `in` on),
+/// all but the one at `skipped`, into `out` (and `given` into `out_given`),
+/// with the positions of the same vertices in `refined`, the map refined by
+/// all of them; `out_splits` receives the splits renumbered.  False when a
+/// split kept needs the vertex of the one skipped.
+template <int d>
+bool refine_without(const Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
+                    const std::vector<Added_vertex>& splits, std::size_t skipped,
+                    const std::vector<Eigen::Matrix<double, d, 1>>& refined, Untangling_input<d>& out,
+                    std::vector<Eigen::Matrix<double, d, 1>>& out_given, std::vector<Added_vertex>& out_splits)
+{
+  const std::size_t n = in.positions.size(), none = std::size_t(-1);
+  std::vector<std::size_t> renumbered(n + splits.size(), none);
+  for(std::size_t v = 0; v < n; ++v) renumbered[v] = v;
+  out = in;
+  out_given = given;
+  out_splits.clear();
+  for(std::size_t i = 0; i < splits.size(); ++i) {
+    if(i == skipped) continue;
+    const std::size_t a = renumbered[splits[i].parents[0]], b = renumbered[splits[i].parents[1]];
+    if(a == none || b == none || !has_edge<d>(out, make_edge(a, b))) return false;
+    const std::size_t v = split_edge<d>(out, out_given, make_edge(a, b));
+    renumbered[n + i] = v;
+    out.positions[v] = refined[n + i];
+    out_splits.push_back({v, make_edge(a, b)});
+  }
+  std::copy(refined.begin(), refined.begin() + n, out.positions.begin());
+  return true;
+}
+
 /// The refinement of the file's comment on `in`, the map a run `r` from
 /// `given` left with inverted elements; `rerun(problem)` untangles a refined
 /// problem from its positions with the run's fallbacks and returns its
@@ -147,6 +188,21 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     if(next.status == Untangling_status::INVALID_INPUT || next.status == Untangling_status::NUMERICAL_FAILURE) break;
     trial.positions = std::move(again.positions);
     repaired = reached_goal(next.status);
+  }
+  // The splits are greedy: drop each one (the latest first) that the map
+  // does without, once the local phase has untangled it again.
+  for(std::size_t i = splits.size(); repaired && i-- > 0 && !out_of_budget();) {
+    Untangling_input<d> fewer;
+    std::vector<Eigen::Matrix<double, d, 1>> fewer_given;
+    std::vector<Added_vertex> fewer_splits;
+    if(!refine_without<d>(in, given, splits, i, trial.positions, fewer, fewer_given, fewer_splits)) continue;
+    const Untangling_problem<d> P = make_untangling_problem<d>(fewer, options.scaling);
+    if(!non_positive_elements<d>(fewer, P.reference_orientation).empty() &&
+       !repair_locally<d>(fewer, within_budget(), seconds_left(), work))
+      continue;
+    trial = std::move(fewer);
+    trial_given = std::move(fewer_given);
+    splits = std::move(fewer_splits);
   }
   add_local_work(r, work);
   r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
