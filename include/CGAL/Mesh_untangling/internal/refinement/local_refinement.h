@@ -12,7 +12,8 @@
 // it lacks.  The refinement splits interior edges only (never a boundary
 // facet: the fixed boundary stays bit for bit), each at its midpoint in the
 // map, the targets and the rest, and tries the smallest fix first:
-//   level 0: the edges of the inverted elements with a fixed end;
+//   level 0: the edges from a vertex of an inverted element to a fixed vertex
+//            (rockerarm 291: its inverted tetrahedra have free vertices only);
 //   level 1: every edge of the inverted elements;
 //   level 2, 3: every edge of the elements within 1, 2 vertex rings of them.
 // The edges of a level are split one at a time, each split followed by the
