@@ -6,7 +6,7 @@
 // of one run does not stop the others.  Prints a markdown table and, per pair
 // of solvers, how many cases each solved and the median ratio of their times.
 //
-//   benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...
+//   benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--refine] [--markdown FILE] CASE...
 //
 // Run with --help for the forms of CASE.
 
@@ -53,7 +53,7 @@ using namespace Mesh_untangling_tools;
 namespace {
 
 const char* const usage_text =
-  "usage: benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--markdown FILE] CASE...\n"
+  "usage: benchmark_untangle [--solver auto,lbfgs] [--time-limit SECONDS] [--threads N] [--refine] [--markdown FILE] CASE...\n"
   "\n"
   "Runs the untangler on every CASE with every solver, each run in its own process,\n"
   "and prints a markdown table (stdout, and FILE with --markdown).\n"
@@ -64,6 +64,9 @@ const char* const usage_text =
   "                       a run still going 30 s past it is killed (SIGKILL)\n"
   "  --threads N          at most N threads in the untangler's parallel loops (TBB global_control;\n"
   "                       default: TBB's choice); results do not depend on N, the hash column shows it\n"
+  "  --refine             add the columns of local refinement (Mesh_untangling::parameters::refinement):\n"
+  "                       a run the fixed connectivity did not solve is run again with refinement\n"
+  "                       (its own process and time limit); a solved one needs none (0 vertices added)\n"
   "  --markdown FILE      also write the table and the summary to FILE\n"
   "\n"
   "A CASE is one of:\n"
@@ -146,7 +149,7 @@ std::string positions_hash(const Mesh_file& mesh)
   return buffer;
 }
 
-void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit, int threads)
+void child_run(int fd, const Case_spec& c, const std::string& solver, double time_limit, int threads, bool refine)
 {
   const Thread_limit limit(threads);
   auto send = [fd](const std::string& key, const std::string& value) { write_all(fd, key + "\t" + value + "\n"); };
@@ -164,6 +167,7 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     Run_options options;
     options.solver = *CGAL::Mesh_untangling::solver_from_string(solver);
     options.max_seconds = time_limit;
+    options.refinement = refine;
     const auto start = std::chrono::steady_clock::now();
     const Untangling_result result = untangle_mesh_file(p.mesh, p.is_fixed, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -175,6 +179,8 @@ void child_run(int fd, const Case_spec& c, const std::string& solver, double tim
     send("energy", format_energy(result.final_energy));
     send("final_eps", format_energy(result.final_epsilon));
     send("status", short_status(result.status));
+    send("vertices_added", std::to_string(result.vertices_added));
+    p.is_fixed.resize(p.mesh.map.size(), false);   // the vertices a refinement added are free
     // UNREPAIRABLE_DEFECTS_LEFT: all that free vertices can repair is repaired
     send("status_success", result.status == MU::Untangling_status::SUCCESS ||
                            result.status == MU::Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? "1" : "0");
@@ -210,6 +216,7 @@ struct Row
   double wall_seconds = 0;    // as seen by the parent, loading included
   double peak_mib = -1;       // -1: unknown
   double killed_after = -1;   // the time limit the run was killed for overrunning; -1: not killed
+  std::shared_ptr<Row> refined;   // --refine: the run with refinement (none: the fixed connectivity solved it)
 
   std::string get(const std::string& key, const std::string& missing = "—") const
   {
@@ -254,7 +261,7 @@ void parse_child_output(const std::string& text, Row& row)
 // killed this long after the limit.
 constexpr double kill_margin_seconds = 30;
 
-Row run_case(const Case_spec& c, const std::string& solver, double time_limit, int threads)
+Row run_case(const Case_spec& c, const std::string& solver, double time_limit, int threads, bool refine)
 {
   Row row;
   row.case_name = c.name;
@@ -278,7 +285,7 @@ Row run_case(const Case_spec& c, const std::string& solver, double time_limit, i
   }
   if(pid == 0) {
     ::close(fds[0]);
-    child_run(fds[1], c, solver, time_limit, threads);
+    child_run(fds[1], c, solver, time_limit, threads, refine);
     ::close(fds[1]);
     ::_exit(0);   // no destructor, no flush of the parent's buffers
   }
@@ -371,6 +378,7 @@ std::string table(const std::vector<Row>& rows)
                                            "inverted before", "inverted after", "input defects", "success",
                                            "seconds", "eps steps", "solver iterations", "energy evaluations",
                                            "final energy", "final eps", "peak memory (MiB)", "result hash"};
+  const bool refine = std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.refined != nullptr; });
   std::vector<std::vector<std::string>> cells;
   for(const Row& r : rows) {
     const std::string ran = r.get("solver", r.solver);
@@ -379,15 +387,25 @@ std::string table(const std::vector<Row>& rows)
                      r.get("inverted_before"), r.get("inverted_after"), r.get("input_defects"), r.outcome,
                      r.has("seconds") ? format_seconds(r.seconds()) : "—", r.get("eps_steps"),
                      r.get("iterations"), r.get("evaluations"), r.get("energy"), r.get("final_eps"), r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : "—", r.get("hash")});
+    if(refine) {
+      const Row& f = r.refined ? *r.refined : r;   // solved without refinement: the same run
+      cells.back().insert(cells.back().begin() + 10, {f.outcome, f.has("seconds") ? format_seconds(f.seconds()) : "—",
+                                                      f.get("vertices_added")});
+    }
     for(std::string& cell : cells.back()) cell = escape_cell(cell);
   }
-  std::vector<std::size_t> width(header.size());
-  for(std::size_t k = 0; k < header.size(); ++k) {
-    width[k] = display_width(header[k]);
+  std::vector<std::string> columns = header;
+  if(refine) columns.insert(columns.begin() + 10, {"--refine: success", "--refine: seconds", "vertices added"});
+  std::vector<std::size_t> width(columns.size());
+  for(std::size_t k = 0; k < columns.size(); ++k) {
+    width[k] = display_width(columns[k]);
     for(const auto& line : cells) width[k] = std::max(width[k], display_width(line[k]));
   }
   // numbers right-aligned, text left-aligned
-  auto numeric = [](std::size_t k) { return k != 0 && k != 4 && k != 8 && k != 16; };
+  auto numeric = [&](std::size_t k) {
+    const std::size_t hash = refine ? 19 : 16;
+    return k != 0 && k != 4 && k != 8 && k != hash && !(refine && k == 10);
+  };
   std::ostringstream out;
   auto print_line = [&](const std::vector<std::string>& line) {
     out << "|";
@@ -397,9 +415,9 @@ std::string table(const std::vector<Row>& rows)
     }
     out << "\n";
   };
-  print_line(header);
+  print_line(columns);
   out << "|";
-  for(std::size_t k = 0; k < header.size(); ++k)
+  for(std::size_t k = 0; k < columns.size(); ++k)
     out << (numeric(k) ? std::string(width[k] + 1, '-') + ":" : ":" + std::string(width[k] + 1, '-')) << "|";
   out << "\n";
   for(const auto& line : cells) print_line(line);
@@ -466,6 +484,27 @@ std::string summary(const std::vector<Row>& rows, const std::vector<Case_spec>& 
     for(const Row& r : rows) solved += r.success;
     out << "\n" << solvers[0] << " solved " << solved << " of " << cases.size() << " cases.\n";
   }
+  for(std::size_t s = 0; s < solvers.size(); ++s) {
+    std::size_t solved = 0, refined = 0;
+    std::vector<double> added;
+    for(std::size_t c = 0; c < cases.size(); ++c) {
+      const Row& r = row_of(c, s);
+      if(!r.refined) { solved += r.success; continue; }
+      solved += r.refined->success;
+      if(r.refined->success) {
+        ++refined;
+        const double vertices = std::stod(r.refined->get("vertices_added", "0"));
+        if(vertices > 0) added.push_back(vertices);
+      }
+    }
+    if(std::none_of(rows.begin(), rows.end(), [](const Row& r) { return r.refined != nullptr; })) break;
+    out << "\n" << solvers[s] << " with --refine solved " << solved << " of " << cases.size() << " cases, "
+        << refined << " of them in the run with refinement, " << added.size() << " with new vertices";
+    if(!added.empty())
+      out << " (vertices added: median " << format_plain(median(added)) << ", max "
+          << format_plain(*std::max_element(added.begin(), added.end())) << ")";
+    out << ".\n";
+  }
   return out.str();
 }
 
@@ -477,6 +516,7 @@ struct Arguments
   double time_limit = 120;
   int threads = 0;   // 0: TBB's default
   std::string markdown;
+  bool refine = false;
   std::vector<Case_spec> cases;
 };
 
@@ -492,6 +532,7 @@ Arguments parse_arguments(int argc, char** argv)
       continue;
     }
     if(argument == "--") { options_done = true; continue; }
+    if(argument == "--refine") { a.refine = true; continue; }
     if(argument == "-h" || argument == "--help") {
       std::cout << usage_text;
       std::exit(0);
@@ -563,12 +604,19 @@ int main(int argc, char** argv)
     for(const std::string& solver : arguments.solvers) {
       const std::string label = "[" + std::to_string(++index) + "/" + std::to_string(total) + "] " + c.name + " " + solver;
       std::cerr << label << ": started" << std::endl;
-      rows.push_back(run_case(c, solver, arguments.time_limit, arguments.threads));
-      const Row& r = rows.back();
+      rows.push_back(run_case(c, solver, arguments.time_limit, arguments.threads, false));
+      Row& r = rows.back();
       std::cerr << label << ": " << (r.success ? "success" : r.outcome) << ", "
                 << (r.has("seconds") ? format_seconds(r.seconds()) + " s untangling, " : std::string())
                 << format_seconds(r.wall_seconds) << " s in all, "
                 << (r.peak_mib >= 0 ? format_fixed(r.peak_mib, 1) : std::string("?")) << " MiB" << std::endl;
+      if(arguments.refine && !r.success) {
+        r.refined = std::make_shared<Row>(run_case(c, solver, arguments.time_limit, arguments.threads, true));
+        std::cerr << label << " --refine: " << (r.refined->success ? "success" : r.refined->outcome) << ", "
+                  << r.refined->get("vertices_added", "?") << " vertices added, "
+                  << (r.refined->has("seconds") ? format_seconds(r.refined->seconds()) + " s" : std::string("?"))
+                  << std::endl;
+      }
     }
 
   std::ostringstream report;
@@ -577,7 +625,11 @@ int main(int argc, char** argv)
          << format_plain(arguments.time_limit + kill_margin_seconds) << " s). inverted before/after: elements inverted "
          << "relative to their rest element (exact predicates); success: the result is locally invertible "
          << "(check) and the untangler reports success; seconds: the untangling call alone; result hash: "
-         << "FNV-1a of the resulting coordinates' bytes.\n\n"
+         << "FNV-1a of the resulting coordinates' bytes."
+         << (arguments.refine ? " --refine: the run with local refinement, where the fixed connectivity did not "
+                                "succeed (its own process and time limit; otherwise the same run, 0 vertices added)."
+                              : "")
+         << "\n\n"
          << table(rows) << summary(rows, arguments.cases, arguments.solvers);
   std::cout << report.str() << std::flush;
   if(markdown.is_open()) {

@@ -10,6 +10,7 @@
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
+#include <CGAL/Mesh_untangling/Added_vertex.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Output_files.h>
@@ -48,10 +49,11 @@ struct Arguments
   std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto";
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
-  bool fix_boundary = false, quiet = false, no_phantoms = false;
+  bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
   std::size_t continuation_steps = MU::default_continuation_steps;
+  std::size_t refine_budget = MU::default_refinement_budget;
   int threads = 0;              // 0: every core
 };
 
@@ -266,8 +268,8 @@ struct Checks
 };
 
 void write_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
-                  const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& v, const Checks& c,
-                  std::size_t phantoms_not_positive)
+                  const Mesh_file& mesh, const MU::Untangling_result& r, const Run_record& run_record,
+                  const Verdict& v, const Checks& c, std::size_t phantoms_not_positive)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -321,6 +323,12 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["continuation"] = args.continuation;
   j["continuation_steps"] = r.continuation_steps;
   j["input_returned"] = r.input_returned;
+  j["refinement"] = args.refine;
+  j["vertices_added"] = r.vertices_added;
+  nlohmann::ordered_json added = nlohmann::ordered_json::array();
+  for(const MU::Added_vertex& a : run_record.added_vertices)
+    added.push_back({{"vertex", a.vertex}, {"parents", {a.parents[0], a.parents[1]}}});
+  j["added_vertices"] = added;
   j["outer_iterations"] = r.outer_iterations;
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
@@ -398,6 +406,8 @@ Run_options run_options(const Arguments& args, Progress_display* display)
                        : args.continuation == "always" ? MU::Continuation::ALWAYS
                                                        : MU::Continuation::AUTOMATIC;
   options.continuation_steps = args.continuation_steps;
+  options.refinement = args.refine;
+  options.refinement_budget = args.refine_budget;
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
     options.progress_fraction = [display](double f) { return display->fraction(f); };
@@ -457,6 +467,20 @@ struct Run
   Run_record record;
 };
 
+/// The point fields parent_a and parent_b: the ends of the edge whose split
+/// added the vertex, -1 for the input's vertices.
+void add_parent_fields(const Mesh_file& mesh, const Run_record& record, IO::VTK_fields& points)
+{
+  IO::VTK_field a{"parent_a", std::vector<double>(mesh.map.size(), -1.), true};
+  IO::VTK_field b{"parent_b", std::vector<double>(mesh.map.size(), -1.), true};
+  for(const MU::Added_vertex& v : record.added_vertices) {
+    a.values[v.vertex] = double(v.parents[0]);
+    b.values[v.vertex] = double(v.parents[1]);
+  }
+  points.push_back(std::move(a));
+  points.push_back(std::move(b));
+}
+
 /// Writes every output to its temporary, commits them all together and
 /// returns the verdict on the result as written.
 Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, const Temporary_outputs& to,
@@ -465,7 +489,10 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   // Fields are measured on the coordinates as written: the writers print
   // the shortest text that reads back to the same doubles.
   std::optional<Map_fields> fields;
-  if(lowercase_extension(args.output) == ".vtk") fields = measure_map(mesh, run.fixed, run.record);
+  if(lowercase_extension(args.output) == ".vtk") {
+    fields = measure_map(mesh, run.fixed, run.record);
+    if(args.refine) add_parent_fields(mesh, run.record, fields->points);
+  }
   std::optional<Phantom_mesh> phantoms;
   if(!run.record.phantom_simplices.empty() || !args.phantoms.empty()) phantoms = phantom_mesh(mesh, run.record);
 
@@ -491,7 +518,7 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   }
   if(!args.report.empty())
     write_text_file(args.report, to.report, [&](std::ostream& out) {
-      write_report(out, args, run.fixed_source, mesh, run.result, verdict, run.checks,
+      write_report(out, args, run.fixed_source, mesh, run.result, run.record, verdict, run.checks,
                    phantoms ? phantoms->not_positive : 0);
     });
   files.commit();
@@ -529,6 +556,9 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
       std::fprintf(stderr, "why: %s\n", r.message.empty() ? MU::to_string(r.status).c_str() : r.message.c_str());
     if(r.continuation_steps > 0)
       std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible\n", r.continuation_steps);
+    if(r.vertices_added > 0)
+      std::fprintf(stderr, "refinement: %zu vertices added (interior edges split at their midpoints)\n",
+                   r.vertices_added);
     if(r.input_returned)
       std::fprintf(stderr, "the run ended with more defects than its input: the input map is written unchanged\n");
     std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
@@ -571,6 +601,7 @@ int run(const Arguments& args)
   if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
   run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, display.get()), &run.record);
   display.reset();
+  run.fixed.resize(mesh.map.size(), false);   // the vertices a refinement added are free
   const Verdict verdict = write_outputs(args, mesh, run, temporaries, files);
   print_summary(args, mesh, run, verdict);
   if(verdict.locally_invertible) return 0;
@@ -643,6 +674,12 @@ int main(int argc, char** argv)
     ->check(CLI::IsMember({"auto", "never", "always"}));
   app.add_option("--continuation-steps", args.continuation_steps, "equal steps the continuation starts with "
                  "(a failed step is halved)")->check(whole_number_from_1);
+  auto* refine = app.add_flag("--refine", args.refine, "when every boundary vertex is fixed and the rest is given, "
+               "split interior edges around the elements that the fixed connectivity leaves inverted (new free vertices "
+               "at the midpoints, in the map and the rest) and untangle again; the refined mesh is written, a .vtk "
+               "output with the point fields parent_a and parent_b (-1 for the input's vertices)");
+  app.add_option("--refine-budget", args.refine_budget, "largest number of vertices --refine may add (default 64)")
+    ->check(whole_number_from_1)->needs(refine);
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");

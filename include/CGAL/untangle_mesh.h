@@ -3,6 +3,7 @@
 #ifndef CGAL_UNTANGLE_MESH_H
 #define CGAL_UNTANGLE_MESH_H
 
+#include <CGAL/Mesh_untangling/Added_vertex.h>
 #include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Phantom_element.h>
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
@@ -85,6 +86,8 @@ template <typename ConcurrencyTag = Parallel_if_available_tag, typename Triangle
 Mesh_untangling::Untangling_result
 untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = parameters::default_values())
 {
+  static_assert(!Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>(),
+                "Mesh_untangling::parameters::refinement is offered by CGAL::untangle_simplex_soup only");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto domain = choose_parameter(get_parameter(np, internal_np::vertex_point),
@@ -139,6 +142,8 @@ template <typename ConcurrencyTag = Parallel_if_available_tag, typename Tetrahed
 Mesh_untangling::Untangling_result
 untangle_mesh(TetrahedralComplex& tc, const Named_function_parameters<T, Tag, Base>& np)
 {
+  static_assert(!Mesh_untangling::internal::is_given_parameter<Named_function_parameters<T, Tag, Base>, internal_np::mesh_untangling_refinement_t>(),
+                "Mesh_untangling::parameters::refinement is offered by CGAL::untangle_simplex_soup only");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
@@ -317,11 +322,34 @@ Mesh_untangling::Untangling_result untangle_mesh(Mesh& mesh)
 ///     \cgalParamDescription{free-boundary protection and the per-element figures of the result; phantoms as
 ///       `Mesh_untangling::Phantom_element<std::size_t, Point>`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::refinement}
+///     \cgalParamDescription{when every boundary point is fixed, `rest_points` are given and the run with the
+///       given simplices ends with inverted ones, split interior edges around them (never a boundary edge:
+///       the fixed boundary stays as it is) and untangle again, until the map is locally invertible or the
+///       budget is spent.  A refinement that succeeds is written into the ranges: the new points are
+///       appended to `points` (free, at their final positions), every split simplex keeps its index as one
+///       of its halves, and the other halves are appended to `simplices`; `Untangling_result::vertices_added`
+///       counts the new points.  One that does not succeed changes neither range.}
+///     \cgalParamType{`bool`; when given, `points` and `simplices` must be non-const containers with
+///       `push_back` (e.g. `std::vector`), each simplex an array or a container with `resize`}
+///     \cgalParamDefault{`false`: the connectivity is kept}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::refinement_budget}
+///     \cgalParamDescription{the largest number of points the refinement may add}
+///     \cgalParamType{`std::size_t`, at least 1 (0 is an invalid parameter)}
+///     \cgalParamDefault{`Mesh_untangling::default_refinement_budget` (64)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::added_vertices_output}
+///     \cgalParamDescription{receives one `Mesh_untangling::Added_vertex` per added point, in the order of
+///       the splits: its index and the two ends of the edge it split (its rest position is their midpoint)}
+///     \cgalParamType{an output iterator accepting `Mesh_untangling::Added_vertex`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename ConcurrencyTag = Parallel_if_available_tag, typename PointRange, typename SimplexRange,
           typename NamedParameters = parameters::Default_named_parameters>
 Mesh_untangling::Untangling_result
-untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
+untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
                       const NamedParameters& np = parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
@@ -331,6 +359,12 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_points);
+  constexpr bool refines =
+    Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>();
+  static_assert(!refines || (std::is_lvalue_reference_v<SimplexRange> &&
+                             !std::is_const_v<std::remove_reference_t<SimplexRange>>),
+                "with Mesh_untangling::parameters::refinement, the simplex range must be a non-const lvalue: "
+                "the refined simplices are written into it");
 
   if constexpr(Mesh_untangling::internal::is_given_parameter<NamedParameters,
                                                             internal_np::mesh_untangling_rest_points_t>()) {
@@ -345,7 +379,11 @@ untangle_simplex_soup(PointRange& points, const SimplexRange& simplices,
   return Mesh_untangling::internal::untangle_as_parameters_ask<d, std::size_t, Point>(
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<d>& result) {
-      Mesh_untangling::internal::write_back_soup<d>(result, points);
+      if constexpr(refines) {
+        Mesh_untangling::internal::write_back_refined_soup<d>(result, points, simplices);
+      } else {
+        Mesh_untangling::internal::write_back_soup<d>(result, points);
+      }
     },
     ConcurrencyTag());
 }

@@ -761,6 +761,48 @@ if [ -n "$DATA" ] && [ -f "$r348/parameter.vtk" ]; then
 fi
 
 #
+# Local refinement (--refine): one free vertex inside a fixed Z-shaped
+# octagon, whose kernel is empty: no position of it untangles its eight
+# triangles (exit 1); with --refine, split edges give it room (exit 0), the
+# refined mesh is written with the parents of each new vertex.
+mkdir refine && cd refine || exit 1
+{
+  echo "9 2"; echo "0 0"
+  for i in 0 1 2 3 4 5 6 7; do awk -v i=$i 'BEGIN { a = atan2(0, -1) * i / 4; printf "%.17g %.17g\n", cos(a), sin(a) }'; done
+  echo "9 2"; echo "1.5 1.5"; printf '1 0\n3 0\n3 1\n2 1\n2 3\n0 3\n0 2\n1 2\n'
+  echo "8 3"; for i in 1 2 3 4 5 6 7; do echo "0 $i $((i + 1))"; done; echo "0 8 1"
+  echo "8"; seq 1 8
+} > z.input
+run zfixed z.input -o zfixed.vtk --report zfixed.json -q
+check "Z star, fixed connectivity: exit 1" rc_is zfixed 1
+check "Z star, fixed connectivity: no vertex added" json_is zfixed.json vertices_added 0
+run zrefine z.input --refine -o zrefine.vtk --report zrefine.json -q
+check "Z star --refine: exit 0" rc_is zrefine 0
+check "Z star --refine: vertices added" json_positive zrefine.json vertices_added
+added=$(json_get zrefine.json vertices_added)
+check "Z star --refine: the refined mesh is written" [ "$(vtk_header zrefine.vtk POINTS)" = "$((9 + added))" ]
+check "Z star --refine: the report counts its vertices" json_is zrefine.json vertices "$((9 + added))"
+check "Z star --refine: parent_a and parent_b per point" vtk_fields_sized zrefine.vtk "$((9 + added))" parent_a parent_b
+check "Z star --refine: -1 for the input's points" \
+  [ "$(vtk_field zrefine.vtk parent_a | head -n 9 | sort -u)" = "-1" ]
+check "Z star --refine: parents for the new points" \
+  [ "$(vtk_field zrefine.vtk parent_b | tail -n "$added" | awk '$1 >= 0' | wc -l | tr -d ' ')" = "$added" ]
+if [ "$have_python" = 1 ]; then
+  check "Z star --refine: the report lists the parents as the .vtk" [ "$(python3 -c 'import json, sys
+print("\n".join(str(a["parents"][0]) for a in json.load(open(sys.argv[1]))["added_vertices"]))' zrefine.json)" = \
+    "$(vtk_field zrefine.vtk parent_a | tail -n "$added")" ]
+fi
+run zinput z.input --refine -o zrefine.input -q
+check "Z star --refine: handles unchanged" [ "$(handle_rows z.input)" = "$(handle_rows zrefine.input)" ]
+run zbudget0 z.input --refine --refine-budget 0 -o zb.vtk
+check "--refine-budget 0: exit 2" rc_is zbudget0 2
+check "--refine-budget 0: nothing written" [ ! -e zb.vtk ]
+run zbudget z.input --refine-budget 3 -o zb.vtk
+check "--refine-budget without --refine: exit 2" rc_is zbudget 2
+check "--refine-budget without --refine: says so" err_has zbudget 'refine'
+cd .. || exit 1
+
+#
 # Every vertex fixed and some triangles inverted: nothing can repair them.
 # Exit 3, never "locally invertible", and the report counts the elements that
 # the .vtk field 'input_defect' flags.

@@ -90,18 +90,41 @@ auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
   return untangle(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
 }
 
+/// Makes `mesh` the refined mesh of `points` and `simplices` (a run's
+/// result): its new vertices, whose rest is the midpoint of their parents'.
+template <int d>
+void grow_by_refinement(Mesh_file& mesh, const std::vector<Point<d>>& points,
+                        const std::vector<std::array<std::size_t, d + 1>>& simplices,
+                        const std::vector<MU::Added_vertex>& added)
+{
+  if(added.empty()) return;
+  mesh.map.resize(points.size(), {0., 0., 0.});
+  for(const MU::Added_vertex& v : added) {
+    std::array<double, 3> middle{0., 0., 0.};
+    for(int c = 0; c < 3; ++c) middle[c] = (mesh.rest[v.parents[0]][c] + mesh.rest[v.parents[1]][c]) / 2;
+    mesh.rest.push_back(middle);
+  }
+  mesh.simplex_lines.clear();   // the halves of split simplices come from no line of the file
+  mesh.simplices.resize(simplices.size());
+  for(std::size_t k = 0; k < simplices.size(); ++k) {
+    mesh.simplices[k] = {0, 0, 0, 0};
+    for(int i = 0; i <= d; ++i) mesh.simplices[k][i] = simplices[k][i];
+  }
+}
+
 template <int d>
 Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                            Run_record* record)
 {
   std::vector<Point<d>> points = cgal_points<d>(mesh.map);
-  const auto simplices = simplices_of<d>(mesh);
+  auto simplices = simplices_of<d>(mesh);
   const auto fixed = boost::make_function_property_map<std::size_t, bool>(
     [&is_fixed](std::size_t v) { return !is_fixed.empty() && is_fixed[v]; });
   std::function<bool(const MU::Untangling_step&)> callback;
   if(options.progress) callback = [&options](const MU::Untangling_step& s) { options.progress(s); return true; };
   std::vector<MU::Phantom_element<std::size_t, Point<d>>> phantoms;
   std::vector<MU::Element_figures> figures;
+  std::vector<MU::Added_vertex> added;
 
   const Untangling_result result = with_rest_points<d>(mesh, [&](const auto& rest) {
     const auto np = rest.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
@@ -112,15 +135,20 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
                               MU::parameters::continuation(options.continuation,
                               MU::parameters::continuation_steps(options.continuation_steps,
                               MU::parameters::progress_callback(options.progress_fraction, np))))));
-    if(!record) return CGAL::untangle_simplex_soup(points, simplices, package_np);
+    const auto refining_np = MU::parameters::refinement(options.refinement,
+                               MU::parameters::refinement_budget(options.refinement_budget,
+                               MU::parameters::added_vertices_output(std::back_inserter(added), package_np)));
+    if(!record) return CGAL::untangle_simplex_soup(points, simplices, refining_np);
     return CGAL::untangle_simplex_soup(points, simplices,
                                        MU::parameters::phantom_output(std::back_inserter(phantoms),
-                                       MU::parameters::element_figures_output(std::back_inserter(figures), package_np)));
+                                       MU::parameters::element_figures_output(std::back_inserter(figures), refining_np)));
   });
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
+  grow_by_refinement<d>(mesh, points, simplices, added);
   for(std::size_t v = 0; v < points.size(); ++v)
     for(int c = 0; c < d; ++c) mesh.map[v][c] = points[v][c];
   if(record) {
+    record->added_vertices = std::move(added);
     record->dimension = d;
     record->element_figures = std::move(figures);
     record->phantom_simplices.clear();

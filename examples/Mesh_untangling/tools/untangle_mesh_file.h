@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
+#include <CGAL/Mesh_untangling/Added_vertex.h>
 #include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
@@ -44,6 +45,10 @@ struct Run_options
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
   /// told the fraction of the run done (Mesh_untangling::parameters::progress_callback); false cancels
   std::function<bool(double)> progress_fraction;
+  /// Mesh_untangling::parameters::refinement: split interior edges when the
+  /// fixed connectivity leaves inverted elements (fixed boundary, rest given)
+  bool refinement = false;
+  std::size_t refinement_budget = CGAL::Mesh_untangling::default_refinement_budget;
 };
 
 /// The problem does not make sense (names what is wrong).
@@ -61,6 +66,8 @@ struct Run_record
   std::vector<std::array<double, 3>> phantom_vertices;
   /// per mesh element, then per phantom, on the map the run handed back
   std::vector<CGAL::Mesh_untangling::Element_figures> element_figures;
+  /// the vertices the refinement added (the mesh's last ones), with their parents
+  std::vector<CGAL::Mesh_untangling::Added_vertex> added_vertices;
 };
 
 /// Untangles `mesh.map` in place.  Triangles untangle a planar map (z = 0)
@@ -68,6 +75,10 @@ struct Run_record
 /// isometrically); tetrahedra untangle a 3D map with targets from the rest
 /// positions.  Without rest geometry every target is a regular simplex.
 /// `record`, when given, receives the phantoms the run used and the figures of every element.
+/// With `options.refinement`, a refined result grows `mesh` (Untangling_result::vertices_added
+/// new vertices, free, after the others; their rest at the midpoint of their parents'; split
+/// simplices rewritten in place, their other halves appended): the caller extends `is_fixed`
+/// (with false) before using it on the mesh again.
 /// Throws Invalid_problem.
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                      Run_record* record = nullptr);

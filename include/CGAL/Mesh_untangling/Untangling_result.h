@@ -64,6 +64,9 @@ struct Untangling_result
   std::size_t number_of_phantom_elements = 0;  ///< phantom elements added to the energy (free boundary protection)
   std::size_t number_of_phantom_vertices = 0;  ///< phantom vertices added as unknowns (3D irregular boundary stars)
   std::size_t incomplete_phantom_stars = 0;    ///< stars the phantom construction could not reduce fully (less protected)
+  /// vertices the local refinement added (`Mesh_untangling::parameters::refinement`):
+  /// the last ones of `number_of_vertices`, which counts the mesh handed back
+  std::size_t vertices_added = 0;
 
   std::size_t inverted_before = 0;     ///< inverted elements in the input map (input defects excluded)
   std::size_t inverted_after = 0;      ///< inverted elements in the result (input defects excluded)

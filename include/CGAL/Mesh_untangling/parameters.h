@@ -30,6 +30,9 @@ enum mesh_untangling_continuation_t { mesh_untangling_continuation };
 enum mesh_untangling_continuation_steps_t { mesh_untangling_continuation_steps };
 enum mesh_untangling_element_figures_output_t { mesh_untangling_element_figures_output };
 enum mesh_untangling_progress_callback_t { mesh_untangling_progress_callback };
+enum mesh_untangling_refinement_t { mesh_untangling_refinement };
+enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
+enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -106,6 +109,11 @@ constexpr std::size_t default_continuation_steps = 8;
 /// Default largest number of eps steps (`number_of_iterations`), all stages together.
 constexpr std::size_t default_number_of_iterations = 5000;
 
+/// \ingroup PkgMeshUntanglingRef
+/// Default largest number of vertices the local refinement may add
+/// (`Mesh_untangling::parameters::refinement_budget`).
+constexpr std::size_t default_refinement_budget = 64;
+
 namespace parameters {
 
 using Default_named_parameters = CGAL::parameters::Default_named_parameters;
@@ -176,6 +184,23 @@ CGAL_MESH_UNTANGLING_PARAMETER(element_figures_output, mesh_untangling_element_f
 /// the run: it stops at the end of the current eps step and hands the input
 /// map back unchanged, with the status `Untangling_status::CANCELLED`.
 CGAL_MESH_UNTANGLING_PARAMETER(progress_callback, mesh_untangling_progress_callback_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `bool`: when a run with every boundary vertex fixed ends with inverted
+/// elements, split interior edges around them (new free vertices at the
+/// edges' midpoints, in the map and in the rest) and untangle again, until
+/// the map is locally invertible or the budget is spent (default `false`:
+/// the connectivity is kept).  Offered by `CGAL::untangle_simplex_soup`,
+/// whose point and simplex ranges then grow (see there).
+CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `std::size_t` >= 1: the largest number of vertices the refinement may add
+/// (default `default_refinement_budget`).
+CGAL_MESH_UNTANGLING_PARAMETER(refinement_budget, mesh_untangling_refinement_budget_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// An output iterator receiving one `CGAL::Mesh_untangling::Added_vertex`
+/// per vertex the refinement added, in the order of the splits (none
+/// when the refinement did not run or did not succeed).
+CGAL_MESH_UNTANGLING_PARAMETER(added_vertices_output, mesh_untangling_added_vertices_output_t)
 
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 

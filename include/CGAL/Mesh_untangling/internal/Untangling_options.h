@@ -38,6 +38,10 @@ struct Untangling_options
   bool give_up_on_stall = false;
   // Stage 0 runs until its energy settles or the budget is spent (local_repair.h).
   bool stage_0_never_stalls = false;
+  // Local refinement after a fixed-boundary run that leaves inverted
+  // elements (refinement/local_refinement.h), and its budget of new vertices.
+  bool refinement = false;
+  std::size_t refinement_budget = default_refinement_budget;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };

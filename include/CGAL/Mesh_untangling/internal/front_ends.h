@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Dimension.h>
 
+#include <iterator>
 #include <string>
 #include <utility>
 #include <type_traits>
@@ -211,6 +212,38 @@ void write_back_soup(const Untangling_input<d>& in, PointRange& points)
       else p = Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]);
     }
     ++v;
+  }
+}
+
+template <typename T, typename = void> struct Has_resize : std::false_type {};
+template <typename T>
+struct Has_resize<T, std::void_t<decltype(std::declval<T&>().resize(std::size_t()))>> : std::true_type {};
+
+/// Writes back the result of a refined soup (`in` has more points and
+/// elements than `points` and `simplices`): the free points as
+/// write_back_soup, the added points appended, every simplex rewritten
+/// (a split one becomes one of its halves) and the other halves appended.
+template <int d, typename PointRange, typename SimplexRange>
+void write_back_refined_soup(const Untangling_input<d>& in, PointRange& points, SimplexRange& simplices)
+{
+  using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
+  using Simplex = typename std::iterator_traits<typename SimplexRange::iterator>::value_type;
+  write_back_soup<d>(in, points);
+  for(std::size_t v = points.size(); v < in.positions.size(); ++v) {
+    if constexpr(d == 2) points.push_back(Point(in.positions[v][0], in.positions[v][1]));
+    else points.push_back(Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]));
+  }
+  const auto copy_element = [&](std::size_t k, Simplex& s) {
+    using Index = std::decay_t<decltype(s[0])>;
+    for(int i = 0; i <= d; ++i) s[i] = static_cast<Index>(in.elements[k][i]);
+  };
+  std::size_t k = 0;
+  for(auto& s : simplices) copy_element(k++, s);
+  for(; k < in.elements.size(); ++k) {
+    Simplex s{};
+    if constexpr(Has_resize<Simplex>::value) s.resize(d + 1);
+    copy_element(k, s);
+    simplices.push_back(s);
   }
 }
 

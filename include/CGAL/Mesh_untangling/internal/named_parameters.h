@@ -7,6 +7,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_NAMED_PARAMETERS_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_NAMED_PARAMETERS_H
 
+#include <CGAL/Mesh_untangling/Added_vertex.h>
 #include <CGAL/Mesh_untangling/Element_figures.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
@@ -17,6 +18,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -55,6 +57,11 @@ Untangling_options read_options(const NamedParameters& np)
                                     Continuation::AUTOMATIC);
   o.continuation_steps = choose_parameter(get_parameter(np, internal_np::mesh_untangling_continuation_steps),
                                           Mesh_untangling::default_continuation_steps);
+  o.refinement = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement), false);
+  o.refinement_budget = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement_budget),
+                                         Mesh_untangling::default_refinement_budget);
+  if(o.refinement_budget == 0)
+    o.invalid_parameter = "refinement_budget must be at least 1 vertex, not 0";
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())
     if(!(o.theta >= 0 && o.theta <= 1))
       o.invalid_parameter = "theta must be in [0, 1], not " + std::to_string(o.theta);
@@ -82,7 +89,9 @@ Protection_request<d> read_protection(const NamedParameters& np, const IndexOf& 
 /// caller's mesh unless the input was invalid.  `vertex_of` turns the
 /// solver's vertex indices back into the caller's vertices (`Vertex`), for
 /// the phantoms handed out as `Phantom_element<Vertex, Point>`.  The run
-/// uses the threads `ConcurrencyTag` allows (concurrency.h).
+/// uses the threads `ConcurrencyTag` allows (concurrency.h).  A refined
+/// result has more vertices and elements than the caller's mesh:
+/// `write_back` then grows it (only untangle_simplex_soup offers refinement).
 template <int d, typename Vertex, typename Point, typename NamedParameters, typename IndexOf, typename VertexOf,
           typename WriteBack, typename ConcurrencyTag = Parallel_if_available_tag>
 Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const NamedParameters& np,
@@ -98,15 +107,24 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
 
   Untangling_input<d> given;
   if constexpr(wants_figures) given = input;
+  constexpr bool wants_added =
+    is_given_parameter<NamedParameters, internal_np::mesh_untangling_added_vertices_output_t>();
+
   Phantom_elements<d> phantoms;
+  std::vector<Added_vertex> added;
   const Untangling_result result =
-    run_with_concurrency<ConcurrencyTag>([&] { return untangle<d>(input, options, protection, &phantoms); });
+    run_with_concurrency<ConcurrencyTag>([&] { return untangle<d>(input, options, protection, &phantoms, &added); });
   if(result.status == Untangling_status::INVALID_INPUT) return result;
   write_back(input);
+  if constexpr(wants_added)
+    std::copy(added.begin(), added.end(), get_parameter(np, internal_np::mesh_untangling_added_vertices_output));
   if constexpr(wants_phantoms)
     output_phantom_elements<Vertex, Point>(phantoms, input.positions,
                                            get_parameter(np, internal_np::mesh_untangling_phantom_output), vertex_of);
   if constexpr(wants_figures) {
+    // A refined result is measured on the refined mesh; its boundary, and so
+    // the volume that matched targets are scaled to, is the input's.
+    if(!added.empty()) given = input;
     auto out = get_parameter(np, internal_np::mesh_untangling_element_figures_output);
     for(const Element_figures& f : element_figures<d>(std::move(given), input, phantoms, options.scaling)) *out++ = f;
   }

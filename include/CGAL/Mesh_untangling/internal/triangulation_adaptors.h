@@ -227,6 +227,8 @@ template <typename ConcurrencyTag, typename Triangulation, typename NamedParamet
 Untangling_result untangle_triangulation_cells(const Triangulation_cells<Triangulation>& cells, const std::string& error,
                                                const DefaultFixed& default_fixed, const NamedParameters& np)
 {
+  static_assert(!is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>(),
+                "Mesh_untangling::parameters::refinement is offered by CGAL::untangle_simplex_soup only");
   using CGAL::parameters::get_parameter;
   using Vertex_handle = typename Triangulation::Vertex_handle;
   if(!error.empty()) {

@@ -6,12 +6,15 @@
 // prescribed motions) the continuation from the rest shape; (fixed
 // boundaries) the local repair of the few elements left inverted; and, when
 // a run fails, whichever of its result and its input has fewer defects.
+// On request (refinement), a fixed-boundary run that still leaves inverted
+// elements goes on with local refinement of the mesh.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
 
 #include <CGAL/Mesh_untangling/internal/continuation.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
+#include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
@@ -175,8 +178,7 @@ Untangling_result cancelled_run(Untangling_input<d>& in, const std::vector<Eigen
   add_work(r, work);
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
   r.number_of_fixed_vertices = P.number_of_fixed_vertices;
-  const std::vector<bool> is_fixed(P.is_fixed.begin(), P.is_fixed.end());
-  record_verdict(check_mesh<d>(in, P.reference_orientation, is_fixed), r);
+  record_verdict(check_mesh<d>(in, P.reference_orientation), r);
   r.min_scaled_det_after = r.min_scaled_det_before;
   measure_quality(P, r);
   r.input_returned = true;
@@ -191,11 +193,13 @@ Untangling_result cancelled_run(Untangling_input<d>& in, const std::vector<Eigen
 /// end locally invertible.  `phantoms_used`, when given, receives the
 /// phantoms of the run whose result is returned.  A run that fails hands
 /// back whichever of its result and its input has fewer defects
-/// (keep_the_input_if_better).
+/// (keep_the_input_if_better).  With `options.refinement`, `in` may come
+/// back refined (more vertices and elements), and `added`, when given,
+/// receives its new vertices.
 template <int d>
 Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options,
                            const Protection_request<d>& protection = Protection_request<d>(),
-                           Phantom_elements<d>* phantoms_used = nullptr)
+                           Phantom_elements<d>* phantoms_used = nullptr, std::vector<Added_vertex>* added = nullptr)
 {
   try {
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
@@ -219,12 +223,23 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
     repair_locally_after<d>(in, given, metered, r);
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
+    if(options.refinement && !protection.supplied) {
+      const auto rerun = [&](Untangling_input<d>& refined, const Untangling_options& o) {
+        const std::vector<Eigen::Matrix<double, d, 1>> start = refined.positions;
+        Untangling_result again = untangle_as_asked<d>(refined, o, protection, nullptr);
+        repair_locally_after<d>(refined, start, o, again);
+        return again;
+      };
+      std::vector<Added_vertex> new_vertices;
+      refine_until_locally_invertible<d>(in, given, metered, r, new_vertices, rerun);
+      if(added) *added = std::move(new_vertices);
+    }
   } catch(const std::bad_alloc&) {
     throw;   // the caller's to handle, as for any allocation
   } catch(const std::exception& e) {
     // nothing a solver throws may escape: the input is handed back as it was
     remove_phantom_elements<d>(in);
-    in.positions = given;
+    in.positions = given;   // (the refinement changes `in` only once it succeeded)
     if(phantoms_used) *phantoms_used = Phantom_elements<d>();
     r = Untangling_result();
     r.status = Untangling_status::NUMERICAL_FAILURE;
