@@ -113,15 +113,17 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   // With phantoms built in the rest shape, a stall of the direct untangling
   // is the sign that they block it (see above): do not spend the stage
   // fallbacks on it.
-  // The direct untangling gets half the time and a fifth of the eps steps:
-  // where it does not end locally invertible, it usually goes on until the
-  // budget is spent (Kuhn cavities turned 150-180°: 60 s, 18-64 eps steps,
-  // still hundreds of stars tangled) while the continuation untangles the
-  // same problems in 2.5-7.3 s.  Successful direct runs of the stress
-  // benchmark take at most a few dozen eps steps.
+  // The direct untangling gets two thirds of the time and a fifth of the eps
+  // steps: where it does not end locally invertible, it usually goes on until
+  // the budget is spent (Kuhn cavities turned 150-180°: 60 s, 18-64 eps
+  // steps, still hundreds of stars tangled) while the continuation untangles
+  // the same problems in 2.5-7.3 s.  Successful direct runs of the stress
+  // benchmark take at most a few dozen eps steps, but up to 20 s of 60
+  // (locked region of 38k tets turned 120°): half the time was too little
+  // on a loaded machine.
   const auto given = in.positions;
   Untangling_options direct = options;
-  direct.max_seconds = options.max_seconds / 2;
+  direct.max_seconds = options.max_seconds * 2 / 3;
   direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
   direct.give_up_on_stall = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
   Phantom_elements<d> direct_phantoms;
