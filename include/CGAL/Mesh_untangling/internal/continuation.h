@@ -20,6 +20,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 
+#include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 
 #include <algorithm>
@@ -61,10 +62,124 @@ inline void add_work(Untangling_result& r, const Untangling_result& earlier)
   r.seconds += earlier.seconds;
 }
 
-/// Untangles `in` by continuation from `rest`: the fixed vertices move on
-/// straight lines from their rest positions to their given ones, the free
-/// vertices start at rest.  The result's "before" figures are those of
-/// `input_figures` (a run from the given map); its work is that of every step.
+/// The steps of one continuation and what they share: the problem, the
+/// path of the fixed vertices, the budget (clock and eps steps, shared by
+/// all the steps), the work done, the last map and its phantoms.
+template <int d>
+class Continuation_steps
+{
+public:
+  // A step that has not ended locally invertible after this many eps steps
+  // is halved: successful steps of the stress benchmark take a few each
+  // (Kuhn cavities: 2), failing ones went on for 400-550.  The last step,
+  // to the given positions from the last valid map, has the whole budget.
+  static constexpr std::size_t eps_steps_per_step = 50;
+
+  using Vector = Eigen::Matrix<double, d, 1>;
+
+  Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
+               const std::vector<Vector>& rest)
+    : in_(in), options_(options), protection_(protection), given_(in.positions), path_(in, rest, given_),
+      build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
+  {}
+
+  /// A step from the locally invertible map `from` to `motion`: first
+  /// without phantoms, which is cheaper and, for a small motion from a valid
+  /// map, usually enough (the exact check tells); then with phantoms built
+  /// on `from`, where every phantom is positive.
+  Untangling_result try_step(const std::vector<Vector>& from, double motion)
+  {
+    Untangling_result r = run_step(from, motion, !build_phantoms_);
+    if(build_phantoms_ && !reached_goal(r.status) && !stop_requested_ && has_budget())
+      r = run_step(from, motion, true);
+    return r;
+  }
+
+  /// The last step: the fixed vertices at their given positions from `from`,
+  /// with phantoms; after a stop, or with no eps step left, the map is only checked.
+  Untangling_result finish_from(const std::vector<Vector>& from)
+  {
+    Untangling_result r = run_step(from, 1., true, stop_requested_, true);
+    if(stop_requested_ && !reached_goal(r.status)) r.status = Untangling_status::STOPPED_BY_CALLBACK;
+    return r;
+  }
+
+  bool has_budget() const { return seconds_left() > 0 && eps_steps_left() > 0; }
+  bool stop_requested() const { return stop_requested_; }
+  const std::vector<Vector>& map() const { return map_; }
+  const Phantom_elements<d>& phantoms() const { return used_; }
+  const Untangling_result& work() const { return work_; }
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+private:
+  double seconds_left() const { return options_.max_seconds - elapsed(); }
+  std::size_t eps_steps_left() const
+  {
+    return options_.max_outer_iterations - std::min(options_.max_outer_iterations, work_.outer_iterations);
+  }
+
+  /// The step's problem: the fixed vertices at `motion` of their path, the free ones at `from`.
+  Untangling_input<d> step_input(const std::vector<Vector>& from, double motion) const
+  {
+    Untangling_input<d> step = in_;
+    step.positions = from;
+    for(std::size_t v = 0; v < given_.size(); ++v)
+      if(step.is_fixed[v]) step.positions[v] = path_.position(v, motion);
+    return step;
+  }
+
+  Untangling_options step_options(double motion, bool only_check, bool last_step)
+  {
+    Untangling_options o = options_;
+    o.max_seconds = std::max(0., seconds_left());
+    o.max_outer_iterations = only_check ? 0 : eps_steps_left();
+    if(!last_step) o.max_outer_iterations = std::min(o.max_outer_iterations, eps_steps_per_step);
+    o.give_up_on_stall = false;
+    if(options_.callback)
+      o.callback = [this, motion](const Untangling_step& s) {
+        Untangling_step t = s;
+        t.motion = motion;
+        stop_requested_ = stop_requested_ || !options_.callback(t);
+        return !stop_requested_;
+      };
+    return o;
+  }
+
+  Untangling_result run_step(const std::vector<Vector>& from, double motion, bool with_phantoms,
+                             bool only_check = false, bool last_step = false)
+  {
+    Untangling_input<d> step = step_input(from, motion);
+    Protection_request<d> request = protection_;
+    if(build_phantoms_ && with_phantoms) {
+      Protection_summary unused;
+      request.supplied = build_phantom_elements_on<d>(step, from, unused);
+    }
+    request.enabled = request.enabled && with_phantoms;
+    used_ = Phantom_elements<d>();
+    Untangling_result r = untangle_directly<d>(step, step_options(motion, only_check, last_step), request, &used_);
+    add_work(work_, r);
+    map_ = std::move(step.positions);
+    return r;
+  }
+
+  const Untangling_input<d>& in_;
+  const Untangling_options& options_;
+  const Protection_request<d>& protection_;
+  const std::vector<Vector> given_;
+  const Fixed_vertex_motion<d> path_;
+  const bool build_phantoms_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  Untangling_result work_;   // what the steps cost, all together
+  bool stop_requested_ = false;
+  std::vector<Vector> map_;
+  Phantom_elements<d> used_;
+};
+
+/// Untangles `in` by continuation from `rest`: the fixed vertices move from
+/// their rest positions to their given ones (fixed_vertex_motion.h), the
+/// free vertices start at rest; a step that does not end locally invertible
+/// is tried again at half the size.  The result's "before" figures are those
+/// of `input_figures` (a run from the given map); its work is that of every step.
 template <int d>
 Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
                                            const Protection_request<d>& protection,
@@ -72,102 +187,39 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
                                            const Untangling_result& input_figures,
                                            Phantom_elements<d>* phantoms_used)
 {
-  using Vector = Eigen::Matrix<double, d, 1>;
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [&start] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  const std::vector<Vector> given = in.positions;
-  const bool build_phantoms = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
-
-  Untangling_result work;   // what the steps cost, all together
-  bool stop_requested = false;
-  std::vector<Vector> map;
-  Phantom_elements<d> used;
-  // the eps-step budget and the clock are shared by all the steps
-  const auto steps_left = [&] {
-    return options.max_outer_iterations - std::min(options.max_outer_iterations, work.outer_iterations);
-  };
-  // One step: the fixed vertices at `motion` of their way, the free ones
-  // from `from`, phantoms (when built) on `from`, which is locally invertible.
-  const auto run_step = [&](const std::vector<Vector>& from, double motion, double seconds, std::size_t eps_steps,
-                            bool with_phantoms) {
-    Untangling_input<d> step = in;
-    step.positions = from;
-    for(std::size_t v = 0; v < given.size(); ++v)
-      if(step.is_fixed[v]) step.positions[v] = motion < 1 ? ((1 - motion) * rest[v] + motion * given[v]).eval() : given[v];
-    Protection_request<d> request = protection;
-    if(build_phantoms && with_phantoms) {
-      Protection_summary unused;
-      request.supplied = build_phantom_elements_on<d>(step, from, unused);
-    }
-    request.enabled = request.enabled && with_phantoms;
-    Untangling_options o = options;
-    o.max_seconds = seconds;
-    o.max_outer_iterations = eps_steps;
-    o.give_up_on_stall = false;
-    if(options.callback)
-      o.callback = [&options, &stop_requested, motion](const Untangling_step& s) {
-        Untangling_step t = s;
-        t.motion = motion;
-        stop_requested = stop_requested || !options.callback(t);
-        return !stop_requested;
-      };
-    used = Phantom_elements<d>();
-    Untangling_result r = untangle_directly<d>(step, o, request, &used);
-    add_work(work, r);
-    map = std::move(step.positions);
-    return r;
-  };
-
-  std::vector<Vector> valid = rest;    // the last locally invertible map
+  Continuation_steps<d> c(in, options, protection, rest);
+  auto valid = rest;    // the last locally invertible map
   double reached = 0, increment = 1. / double(std::max<std::size_t>(options.continuation_steps, 1));
   const double smallest_increment = increment / 64;
   std::size_t steps = 0;
   Untangling_result last;
-  bool blocked = false;
-  while(reached < 1 && !blocked) {
+  while(reached < 1 && c.has_budget()) {
     const double motion = std::min(1., reached + increment);
-    const double seconds = options.max_seconds - elapsed();
-    if(!(seconds > 0) || steps_left() == 0) break;
-    // A step is a small motion from a locally invertible map: without
-    // phantoms (half the elements or fewer) it usually ends locally
-    // invertible too, which the exact check tells; only when it does not are
-    // phantoms built on the last valid map.
-    last = run_step(valid, motion, seconds, steps_left(), !build_phantoms);
-    if(build_phantoms && !reached_goal(last.status) && !stop_requested && steps_left() > 0 &&
-       options.max_seconds - elapsed() > 0)
-      last = run_step(valid, motion, options.max_seconds - elapsed(), steps_left(), true);
+    last = c.try_step(valid, motion);
     if(last.status == Untangling_status::INVALID_INPUT) return last;
     if(reached_goal(last.status)) {
-      valid = map;
+      valid = c.map();
       reached = motion;
       ++steps;
-      blocked = stop_requested;
-    } else if(stop_requested) {
-      blocked = true;
-    } else if(increment / 2 >= smallest_increment) {
-      increment /= 2;
-    } else {
-      blocked = true;
     }
+    else if(!c.stop_requested() && increment / 2 >= smallest_increment)
+      increment /= 2;
+    else
+      break;
+    if(c.stop_requested()) break;
   }
   // Blocked, stopped, or out of time or steps before the end: the fixed
-  // vertices must reach their given positions all the same, from the last
-  // valid map (after a stop or with no eps step left, the map is only checked).
-  if(reached < 1) {
-    last = run_step(valid, 1., std::max(0., options.max_seconds - elapsed()), stop_requested ? 0 : steps_left(), true);
-    if(stop_requested && !reached_goal(last.status)) last.status = Untangling_status::STOPPED_BY_CALLBACK;
-  }
-  in.positions = map;
-  if(phantoms_used) *phantoms_used = used;
+  // vertices must reach their given positions all the same.
+  if(reached < 1) last = c.finish_from(valid);
+  in.positions = c.map();
+  if(phantoms_used) *phantoms_used = c.phantoms();
   Untangling_result result = last;
   result.inverted_before = input_figures.inverted_before;
   result.min_scaled_det_before = input_figures.min_scaled_det_before;
-  result.outer_iterations = work.outer_iterations;
-  result.inner_iterations = work.inner_iterations;
-  result.energy_evaluations = work.energy_evaluations;
-  result.seconds = elapsed();
+  result.outer_iterations = c.work().outer_iterations;
+  result.inner_iterations = c.work().inner_iterations;
+  result.energy_evaluations = c.work().energy_evaluations;
+  result.seconds = c.elapsed();
   result.continuation_steps = steps;
   return result;
 }

@@ -16,8 +16,10 @@
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
+#include <CGAL/Mesh_untangling/internal/tutte_start.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
+#include <algorithm>
 #include <new>
 #include <optional>
 #include <string>
@@ -41,6 +43,60 @@ Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_
   return figures;
 }
 
+/// Whether a run that ended with `r` may still hand its remaining budget to
+/// a fallback: it failed, on valid input, neither stopped nor out of budget.
+inline bool leaves_room_for_a_fallback(const Untangling_result& r, const Untangling_options& options)
+{
+  const bool out_of_budget = !(r.seconds < options.max_seconds) || r.outer_iterations >= options.max_outer_iterations;
+  return !reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT &&
+         r.status != Untangling_status::STOPPED_BY_CALLBACK && !out_of_budget;
+}
+
+/// The direct untangling, and when it fails on a 2D disk with nothing fixed,
+/// a run from the disk's convex embedding (tutte_start.h), which is locally
+/// invertible and from which the barrier keeps every element positive: the
+/// result with fewer defects is kept.
+template <int d>
+Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Protection_request<d>& protection,
+                                                         Phantom_elements<d>* phantoms_used)
+{
+  if constexpr(d != 2) {
+    return untangle_directly<d>(in, options, protection, phantoms_used);
+  } else {
+    Phantom_elements<d> direct_phantoms;
+    Untangling_result first = untangle_directly<d>(in, options, protection, &direct_phantoms);
+    const bool nothing_fixed = std::find(in.is_fixed.begin(), in.is_fixed.end(), true) == in.is_fixed.end();
+    std::optional<std::vector<Eigen::Vector2d>> start;
+    if(nothing_fixed && in.phantom_elements == 0 && leaves_room_for_a_fallback(first, options)) {
+      const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+      start = tutte_start(in, P.reference_orientation);
+    }
+    if(!start) {
+      if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
+      return first;
+    }
+    const auto direct_map = in.positions;
+    std::copy(start->begin(), start->end(), in.positions.begin());
+    Untangling_options remaining = options;
+    remaining.max_seconds = options.max_seconds - first.seconds;
+    remaining.max_outer_iterations = options.max_outer_iterations - first.outer_iterations;
+    Phantom_elements<d> convex_phantoms;
+    Untangling_result convex = untangle_directly<d>(in, remaining, protection, &convex_phantoms);
+    if(convex.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, convex)) {
+      in.positions = direct_map;
+      add_work(first, convex);
+      if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
+      return first;
+    }
+    convex.inverted_before = first.inverted_before;   // the figures of the given map
+    convex.min_scaled_det_before = first.min_scaled_det_before;
+    add_work(convex, first);
+    if(phantoms_used) *phantoms_used = std::move(convex_phantoms);
+    return convex;
+  }
+}
+
 /// The run of `untangle` below, whose result may still be worse than its input.
 template <int d>
 Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_options& options,
@@ -52,22 +108,30 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   // and on such problems (CuboidBlocks) the continuation did not rescue any
   // case the direct untangling failed: AUTOMATIC leaves them to it.
   const bool automatic = options.continuation == Continuation::AUTOMATIC;
-  if(!rest || (automatic && !has_free_boundary_vertex<d>(in)))
-    return untangle_directly<d>(in, options, protection, phantoms_used);
+  if(!rest) return untangle_directly_or_from_convex_start<d>(in, options, protection, phantoms_used);
+  if(automatic && !has_free_boundary_vertex<d>(in)) return untangle_directly<d>(in, options, protection, phantoms_used);
   if(!automatic)
     return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
 
   // With phantoms built in the rest shape, a stall of the direct untangling
   // is the sign that they block it (see above): do not spend the stage
   // fallbacks on it.
+  // The direct untangling gets two thirds of the time and a fifth of the eps
+  // steps: where it does not end locally invertible, it usually goes on until
+  // the budget is spent (Kuhn cavities turned 150-180°: 60 s, 18-64 eps
+  // steps, still hundreds of stars tangled) while the continuation untangles
+  // the same problems in 2.5-7.3 s.  Successful direct runs of the stress
+  // benchmark take at most a few dozen eps steps, but up to 20 s of 60
+  // (locked region of 38k tets turned 120°): half the time was too little
+  // on a loaded machine.
   const auto given = in.positions;
   Untangling_options direct = options;
+  direct.max_seconds = options.max_seconds * 2 / 3;
+  direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
   direct.give_up_on_stall = !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
   Phantom_elements<d> direct_phantoms;
   Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);
-  const bool out_of_budget = !(first.seconds < options.max_seconds) || first.outer_iterations >= options.max_outer_iterations;
-  if(reached_goal(first.status) || first.status == Untangling_status::INVALID_INPUT ||
-     first.status == Untangling_status::STOPPED_BY_CALLBACK || out_of_budget) {
+  if(!leaves_room_for_a_fallback(first, options)) {
     if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
     return first;
   }

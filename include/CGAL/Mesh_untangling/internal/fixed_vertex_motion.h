@@ -1,0 +1,159 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The path of the fixed vertices in a continuation, from their rest
+// positions to their given ones.  On straight lines a rotated part shrinks
+// on the way: a cavity turned by 135 degrees passes through 38 % of its size
+// (cos 67.5 degrees), one turned by 180 degrees collapses to its centre at
+// half the motion, and no step can untangle the map around it.  So each
+// connected group of fixed vertices moves as a rigid motion (the rotation
+// and translation that best fit its rest to its given positions, Kabsch's
+// fit by the singular value decomposition) whose angle grows with the
+// motion, plus the rest of its displacement (the residual of the fit) on
+// straight lines.  Groups of fewer than d + 1 vertices, or flat ones, move
+// on straight lines.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H
+
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <int d>
+class Fixed_vertex_motion
+{
+public:
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Matrix = Eigen::Matrix<double, d, d>;
+
+  /// `in` gives the mesh and which vertices are fixed; `rest` and `given`
+  /// their positions at motion 0 and 1.
+  Fixed_vertex_motion(const Untangling_input<d>& in, const std::vector<Vector>& rest, const std::vector<Vector>& given)
+    : rest_(rest), given_(given)
+  {
+    find_groups(in);
+    for(Group& g : groups_) fit(g);
+  }
+
+  /// Where fixed vertex `v` is at `motion` (0: rest, 1: given, exactly).
+  Vector position(std::size_t v, double motion) const
+  {
+    if(!(motion < 1)) return given_[v];
+    if(group_of_[v] == none) return (1 - motion) * rest_[v] + motion * given_[v];
+    const Group& g = groups_[group_of_[v]];
+    const Vector fitted = g.given_centre + g.rotation * (rest_[v] - g.rest_centre);
+    const Vector centre = (1 - motion) * g.rest_centre + motion * g.given_centre;
+    return centre + rotation_at(g, motion) * (rest_[v] - g.rest_centre) + motion * (given_[v] - fitted);
+  }
+
+  /// The largest angle (radians) of the groups' rigid motions: 0 when all move on straight lines.
+  double largest_angle() const
+  {
+    double angle = 0;
+    for(const Group& g : groups_)
+      if(g.rigid) angle = std::max(angle, rotation_angle(g.rotation));
+    return angle;
+  }
+
+private:
+  static constexpr std::size_t none = std::size_t(-1);
+  struct Group
+  {
+    std::vector<std::size_t> vertices;
+    bool rigid = false;
+    Vector rest_centre = Vector::Zero(), given_centre = Vector::Zero();
+    Matrix rotation = Matrix::Identity();
+  };
+
+  /// The connected components of the fixed vertices along the elements' edges.
+  void find_groups(const Untangling_input<d>& in)
+  {
+    const std::size_t n = in.number_of_mesh_vertices();
+    std::vector<std::size_t> parent(n);
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    const auto root = [&parent](std::size_t v) {
+      while(parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    const auto fixed = [&in](std::size_t v) { return v < in.is_fixed.size() && in.is_fixed[v]; };
+    for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k)
+      for(int i = 0; i <= d; ++i)
+        for(int j = i + 1; j <= d; ++j) {
+          const std::size_t a = in.elements[k][i], b = in.elements[k][j];
+          if(fixed(a) && fixed(b)) parent[root(a)] = root(b);
+        }
+    std::vector<std::size_t> group_of_root(n, none);
+    group_of_.assign(n, none);
+    for(std::size_t v = 0; v < n; ++v) {
+      if(!fixed(v)) continue;
+      std::size_t& g = group_of_root[root(v)];
+      if(g == none) { g = groups_.size(); groups_.emplace_back(); }
+      groups_[g].vertices.push_back(v);
+      group_of_[v] = g;
+    }
+  }
+
+  /// Kabsch's fit of `g`'s rest to its given positions; a group it cannot
+  /// orient (too few vertices, flat) is left to straight lines.
+  void fit(Group& g)
+  {
+    const double count = double(g.vertices.size());
+    if(g.vertices.size() <= std::size_t(d)) return unfit(g);
+    for(std::size_t v : g.vertices) { g.rest_centre += rest_[v] / count; g.given_centre += given_[v] / count; }
+    Matrix covariance = Matrix::Zero();
+    for(std::size_t v : g.vertices) covariance += (rest_[v] - g.rest_centre) * (given_[v] - g.given_centre).transpose();
+    Eigen::JacobiSVD<Matrix> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Vector s = svd.singularValues();
+    if(!(s(d - 1) > 1e-9 * s(0))) return unfit(g);   // flat (or not finite): no orientation to follow
+    Matrix reflection = Matrix::Identity();
+    reflection(d - 1, d - 1) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1 : 1;
+    g.rotation = svd.matrixV() * reflection * svd.matrixU().transpose();
+    g.rigid = g.rotation.allFinite();
+    if(!g.rigid) unfit(g);
+  }
+
+  void unfit(Group& g)
+  {
+    for(std::size_t v : g.vertices) group_of_[v] = none;
+  }
+
+  static double rotation_angle(const Matrix& r)
+  {
+    if constexpr(d == 2) return std::abs(std::atan2(r(1, 0), r(0, 0)));
+    else return Eigen::AngleAxisd(r).angle();
+  }
+
+  /// The rotation of `g` at `motion`: its angle times the motion, about the same axis.
+  static Matrix rotation_at(const Group& g, double motion)
+  {
+    if constexpr(d == 2) {
+      const double angle = motion * std::atan2(g.rotation(1, 0), g.rotation(0, 0));
+      Matrix r;
+      r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+      return r;
+    } else {
+      const Eigen::Quaterniond turn(g.rotation);
+      return Eigen::Quaterniond::Identity().slerp(motion, turn).toRotationMatrix();
+    }
+  }
+
+  const std::vector<Vector>& rest_;
+  const std::vector<Vector>& given_;
+  std::vector<Group> groups_;
+  std::vector<std::size_t> group_of_;
+};
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H

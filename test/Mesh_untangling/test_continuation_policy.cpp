@@ -1,0 +1,62 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The automatic continuation's policy (internal/untangle_impl.h): the direct
+// untangling of a free-boundary problem with a prescribed motion gets a fifth
+// of the eps steps, so that the continuation still has the rest.  Two Kuhn
+// cavities turned by 150° (margin 4): the direct run does not end locally
+// invertible within 40 eps steps; the continuation does within 32.
+// Usage: test_continuation_policy
+
+#include "free_boundary_families.h"
+
+#include "test_common.h"
+
+#include <CGAL/Mesh_untangling/internal/untangle_impl.h>
+#include <CGAL/Mesh_untangling/invertibility.h>
+
+#include <cstdio>
+#include <vector>
+
+namespace MI = CGAL::Mesh_untangling::internal;
+using namespace Mesh_untangling_tools;
+
+namespace {
+
+/// The 3D problem of a tetrahedral mesh file: its map, its rest tetrahedra as targets, its fixed vertices.
+MI::Untangling_input<3> tetrahedral_problem(const Mesh_file& mesh)
+{
+  MI::Untangling_input<3> in;
+  for(const auto& p : mesh.map) in.positions.emplace_back(p[0], p[1], p[2]);
+  for(const auto& s : mesh.simplices) {
+    in.elements.push_back({s[0], s[1], s[2], s[3]});
+    std::array<Eigen::Vector3d, 4> target;
+    for(int i = 0; i < 4; ++i) target[i] = Eigen::Vector3d(mesh.rest[s[i]].data());
+    in.targets.push_back(target);
+  }
+  in.is_fixed.assign(mesh.map.size(), false);
+  for(std::size_t v : mesh.fixed) in.is_fixed[v] = true;
+  return in;
+}
+
+} // namespace
+
+int main()
+{
+  const Mesh_file mesh = make_kuhn_cavities(2, 4, 2, 150);
+  MI::Untangling_input<3> in = tetrahedral_problem(mesh);
+  const auto given = in.positions;
+  MI::Untangling_options options;
+  options.max_outer_iterations = 40;
+  const auto r = MI::untangle<3>(in, options);
+  std::printf("Kuhn cavities x2 margin 4 turned 150°, 40 eps steps: %s, %zu inverted, %zu over-wound vertices, "
+              "%zu continuation steps, %zu eps steps, %.2f s\n",
+              CGAL::Mesh_untangling::to_string(r.status).c_str(), r.inverted_after, r.overwound_vertices_after,
+              r.continuation_steps, r.outer_iterations, r.seconds);
+  CHECK_MESSAGE(r.inverted_before > 100, "only " << r.inverted_before << " inverted before");
+  CHECK_MESSAGE(r.status == CGAL::Mesh_untangling::Untangling_status::SUCCESS, "not locally invertible: " << r.message);
+  CHECK_MESSAGE(r.continuation_steps > 0, "no continuation step");
+  CHECK_MESSAGE(r.outer_iterations <= 40, r.outer_iterations << " eps steps");
+  for(std::size_t v : mesh.fixed) CHECK_MESSAGE(in.positions[v] == given[v], "fixed vertex " << v << " moved");
+  return test::exit_code();
+}

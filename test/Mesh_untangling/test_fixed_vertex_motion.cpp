@@ -1,0 +1,92 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The path of the fixed vertices in a continuation
+// (internal/fixed_vertex_motion.h): exact ends, rigid groups that keep their
+// shape on the way (a straight line collapses a group turned by 180° at half
+// the motion), groups too small or flat for a fit on straight lines.  End to
+// end, benchmark_free_boundary --family cavities-kuhn measures it (two
+// cavities turned 180°, margin 6: 7.3 s by continuation, not locally
+// invertible after 60 s on straight lines).
+// Usage: test_fixed_vertex_motion
+
+#include "test_common.h"
+
+#include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
+
+#include <cmath>
+#include <vector>
+
+namespace MI = CGAL::Mesh_untangling::internal;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+/// A cube's 8 corners (fixed, one group through the 6 Kuhn tetrahedra) plus
+/// one free vertex; the given map turns the cube by `degrees` about the
+/// axis (1, 1, 0) and moves it by (3, 0, 0).
+struct Turned_cube
+{
+  MI::Untangling_input<3> in;
+  std::vector<Eigen::Vector3d> rest, given;
+
+  explicit Turned_cube(double degrees)
+  {
+    for(int i = 0; i < 8; ++i) rest.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    rest.emplace_back(2, 2, 2);   // free
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(degrees * pi / 180, Eigen::Vector3d(1, 1, 0).normalized()).matrix();
+    for(int i = 0; i < 8; ++i) given.push_back(turn * rest[i] + Eigen::Vector3d(3, 0, 0));
+    given.push_back(rest[8]);
+    in.positions = given;
+    in.elements = {{0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}, {7, 6, 5, 8}};
+    in.is_fixed.assign(9, true);
+    in.is_fixed[8] = false;
+  }
+};
+
+double smallest_edge_ratio(const Turned_cube& c, const MI::Fixed_vertex_motion<3>& path, double motion)
+{
+  double ratio = 1e300;
+  for(int a = 0; a < 8; ++a)
+    for(int b = a + 1; b < 8; ++b)
+      ratio = std::min(ratio, (path.position(a, motion) - path.position(b, motion)).norm() / (c.rest[a] - c.rest[b]).norm());
+  return ratio;
+}
+
+void check_rigid_group()
+{
+  for(double degrees : {90., 135., 180.}) {
+    const Turned_cube c(degrees);
+    const MI::Fixed_vertex_motion<3> path(c.in, c.rest, c.given);
+    CHECK_MESSAGE(std::abs(path.largest_angle() - degrees * pi / 180) < 1e-9, degrees << "°: angle " << path.largest_angle());
+    for(int v = 0; v < 8; ++v) {
+      CHECK_MESSAGE((path.position(v, 0) - c.rest[v]).norm() < 1e-12, "vertex " << v << " not at rest at motion 0");
+      CHECK_MESSAGE(path.position(v, 1) == c.given[v], "vertex " << v << " not exactly given at motion 1");
+    }
+    for(double motion : {0.25, 0.5, 0.75}) {
+      const double ratio = smallest_edge_ratio(c, path, motion);
+      CHECK_MESSAGE(std::abs(ratio - 1) < 1e-9, degrees << "° at " << motion << ": an edge of the group scaled by " << ratio);
+    }
+  }
+}
+
+void check_groups_on_straight_lines()
+{
+  // the same cube with only 3 corners fixed: no fit, straight lines
+  Turned_cube c(180);
+  c.in.is_fixed.assign(9, false);
+  c.in.is_fixed[0] = c.in.is_fixed[1] = c.in.is_fixed[3] = true;
+  const MI::Fixed_vertex_motion<3> path(c.in, c.rest, c.given);
+  CHECK(path.largest_angle() == 0);
+  CHECK((path.position(1, 0.5) - 0.5 * (c.rest[1] + c.given[1])).norm() < 1e-12);
+}
+
+} // namespace
+
+int main()
+{
+  check_rigid_group();
+  check_groups_on_straight_lines();
+  return test::exit_code();
+}
