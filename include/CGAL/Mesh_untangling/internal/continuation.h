@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Continuation from the rest shape, and the entry every front end calls.
+// Continuation from the rest shape to the prescribed motion of the fixed vertices.
 //
 // When the fixed vertices are prescribed far from their rest positions (the
 // cavities of the paper's Figure 16, turned by 135°), the direct untangling
