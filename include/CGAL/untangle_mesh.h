@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_untangling/Phantom_element.h>
 #include <CGAL/Mesh_untangling/Tetrahedral_mesh_3.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/corner_simplices.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/version.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
@@ -386,6 +387,92 @@ untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
       }
     },
     ConcurrencyTag());
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// Untangles a point/cell soup of quadrilaterals (`Point_2` points, cells of
+/// 4 point indices, counter-clockwise) or hexahedra (`Point_3` points, cells
+/// of 8 point indices in VTK's order, see `Mesh_untangling::cell_corners()`).
+/// The points are the (tangled) map and receive the result.
+///
+/// Each cell enters the energy as its corner simplices (4 triangles, resp. 8
+/// tetrahedra: `Mesh_untangling::corner_simplices()`), whose targets are the
+/// corners of the rest cell (or of the unit square or cube), each weighted by
+/// a quarter (an eighth) of the rest cell's volume, so that a cell counts once.
+/// A cell is untangled when all its corner simplices are positive (exact
+/// predicates): `Untangling_result::inverted_before`, `inverted_after`,
+/// `input_defects` and `number_of_elements` count cells, `min_scaled_det_*`
+/// and the distortions are over corner simplices.  Vertex stars are not
+/// checked (corner simplices overlap, so they form no complex: a `SUCCESS` says
+/// that no cell is inverted, not that no star is covered twice), and no
+/// phantom element protects a free boundary (`phantom_protection` is ignored;
+/// `phantom_elements` is an invalid parameter): fix the boundary, the common
+/// case of quadrilateral and hexahedral meshes.  `Mesh_untangling::check_cells()`
+/// and `Mesh_untangling::scaled_jacobians()` measure a result.
+///
+/// \tparam ConcurrencyTag as for `untangle_simplex_soup()`
+/// \tparam PointRange a random access range of `Point_2` or `Point_3`
+/// \tparam CellRange a range of cells, each a random access range of 4 (quadrilaterals) or 8 (hexahedra) point indices
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed points: never written}
+///     \cgalParamType{a readable property map `std::size_t` -> `bool`}
+///     \cgalParamDefault{no point is fixed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::rest_points}
+///     \cgalParamDescription{the rest shape, one point per point: each cell's target is its rest cell}
+///     \cgalParamType{a random access range of points of the map's type}
+///     \cgalParamDefault{unit squares (unit cubes), scaled to the map's area (volume)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback,
+///     theta, solver, target_scaling, continuation, continuation_steps, element_figures_output}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`; element figures are per corner simplex, corner i of
+///       cell c at K c + i}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// A cell of another size, or with a repeated or out-of-range vertex id, gives
+/// `Untangling_status::INVALID_INPUT` with a message naming it.
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename PointRange, typename CellRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+Mesh_untangling::Untangling_result
+untangle_cell_soup(PointRange& points, const CellRange& cells, const NamedParameters& np = parameters::default_values())
+{
+  static_assert(!Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>(),
+                "Mesh_untangling::parameters::refinement is offered by CGAL::untangle_simplex_soup only");
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
+  constexpr int d = Ambient_dimension<Point>::value;
+  const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                      Static_boolean_property_map<std::size_t, false>());
+  std::vector<Point> rest;
+  if constexpr(Mesh_untangling::internal::is_given_parameter<NamedParameters,
+                                                            internal_np::mesh_untangling_rest_points_t>()) {
+    const auto& given = get_parameter(np, internal_np::mesh_untangling_rest_points);
+    rest.assign(given.begin(), given.end());
+  }
+  Mesh_untangling::Untangling_result invalid;
+  Mesh_untangling::Corner_simplices<d, Point> corners;
+  try {
+    corners = Mesh_untangling::corner_simplices<d>(cells, rest, std::size_t(points.size()));
+  } catch(const std::invalid_argument& e) {
+    invalid.message = e.what();
+    return invalid;
+  }
+  if(corners.simplices.empty()) {
+    invalid.message = "the mesh has no cell";
+    return invalid;
+  }
+  auto input = Mesh_untangling::internal::make_cell_input<d>(points, corners, fixed);
+  const auto identity = [](std::size_t i) { return i; };
+  Mesh_untangling::Untangling_result result = Mesh_untangling::internal::untangle_as_parameters_ask<d, std::size_t, Point>(
+    input, np, identity, identity,
+    [&](const Mesh_untangling::internal::Untangling_input<d>& r) { Mesh_untangling::internal::write_back_soup<d>(r, points); },
+    ConcurrencyTag());
+  result.number_of_elements = corners.simplices.size() / corners.corners_per_cell;
+  return result;
 }
 
 } // namespace CGAL

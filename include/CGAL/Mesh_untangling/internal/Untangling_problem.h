@@ -38,6 +38,17 @@ struct Untangling_input
   std::vector<Simplex> elements;
   std::vector<Target> targets;          // empty: regular simplices
   std::vector<bool> is_fixed;           // empty: all free
+  // Relative weight of each mesh element in the energy; empty: its target's
+  // volume.  Cells give each corner simplex a share of the cell's volume.
+  std::vector<double> weights;
+
+  // Quadrilaterals and hexahedra enter as their corner simplices
+  // (Mesh_untangling/corner_simplices.h): with corners_per_cell = K > 1,
+  // mesh elements [K c, K c + K) are the corners of cell c, corner i with the
+  // cell's vertex i first.  Corners overlap, so they are no simplicial
+  // complex: stars are not checked, the verdict is per cell, and phantoms
+  // (built on stars) do not protect them.
+  std::size_t corners_per_cell = 1;
 
   // The last `phantom_elements` elements and `phantom_vertices` positions are
   // phantoms (append_phantom_elements()): they shape the energy, but sizes,
@@ -51,6 +62,7 @@ struct Untangling_input
 
   std::size_t number_of_mesh_vertices() const { return positions.size() - phantom_vertices; }
   std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
+  bool has_cells() const { return corners_per_cell > 1; }
 };
 
 
@@ -202,7 +214,9 @@ template <int d>
 bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
   const std::size_t n = in.number_of_mesh_vertices();
-  const std::vector<char> on_boundary = boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
+  const std::vector<char> on_boundary = in.has_cells()
+    ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
+    : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
   return false;
@@ -536,6 +550,8 @@ void add_elements(const Untangling_input<d>& in,
   P.input_index.resize(kept_count);
   P.gradient_operators.resize(kept_count);
   P.weights.resize(kept_count);
+  // the factor from the input's target units to the problem's, for given weights (oriented_targets())
+  const double unit = std::ldexp(target_factor, -extreme_target_exponent(in));
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
       if(kept[k + 1] == kept[k]) continue;
@@ -552,7 +568,10 @@ void add_elements(const Untangling_input<d>& in,
       G.row(0) = -Einv.colwise().sum();
       P.elements[i] = e;
       P.input_index[i] = k;
-      P.weights[i] = E.determinant() / (d == 2 ? 2. : 6.);
+      const double volume = E.determinant() / (d == 2 ? 2. : 6.);
+      // (a weight that is not positive, that of a flat cell, falls back on the volume)
+      const double given = k < in.weights.size() ? in.weights[k] * std::pow(unit, d) : 0.;
+      P.weights[i] = given > 0 && std::isfinite(given) ? given : volume;
     }
   });
   double weight_sum = 0;

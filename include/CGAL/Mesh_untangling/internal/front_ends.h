@@ -201,6 +201,29 @@ Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange
   return in;
 }
 
+/// The input of a cell soup: the points and fixed flags as a simplex soup's,
+/// the elements, targets and weights of its corner simplices (corner_simplices.h).
+template <int d, typename PointRange, typename Corners, typename FixedMap>
+Untangling_input<d> make_cell_input(const PointRange& points, const Corners& corners, const FixedMap& fixed)
+{
+  Untangling_input<d> in;
+  std::size_t v = 0;
+  for(const auto& p : points) {
+    in.positions.push_back(to_vector<d>(p));
+    in.is_fixed.push_back(get(fixed, v++));
+  }
+  in.elements = corners.simplices;
+  in.targets.reserve(corners.targets.size());
+  for(const auto& t : corners.targets) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> target;
+    for(int i = 0; i <= d; ++i) target[i] = to_vector<d>(t[i]);
+    in.targets.push_back(target);
+  }
+  in.weights = corners.weights;
+  in.corners_per_cell = corners.corners_per_cell;
+  return in;
+}
+
 template <int d, typename PointRange>
 void write_back_soup(const Untangling_input<d>& in, PointRange& points)
 {

@@ -74,6 +74,12 @@ void grow_by_one_ring(const Untangling_input<d>& in, std::vector<char>& region)
   for(std::size_t k = 0; k < region.size(); ++k)
     for(std::size_t v : in.elements[k])
       if(touched[v]) region[k] = 1;
+  // a cell enters whole: its corners are one element of the mesh
+  const std::size_t K = in.corners_per_cell;
+  if(K > 1)
+    for(std::size_t c = 0; c + K <= region.size(); c += K)
+      if(std::find(region.begin() + c, region.begin() + c + K, 1) != region.begin() + c + K)
+        std::fill(region.begin() + c, region.begin() + c + K, 1);
 }
 
 /// The problem on the elements of `region`: its vertices are those of
@@ -101,7 +107,9 @@ Untangling_input<d> region_problem(const Untangling_input<d>& in, const std::vec
     }
     sub.elements.push_back(s);
     sub.targets.push_back(in.targets[k]);
+    if(k < in.weights.size()) sub.weights.push_back(in.weights[k]);
   }
+  sub.corners_per_cell = in.corners_per_cell;   // (grow_by_one_ring() takes whole cells)
   for(std::size_t v : vertex_of) {
     sub.positions.push_back(in.positions[v]);
     sub.is_fixed.push_back(on_cut[v] || (!in.is_fixed.empty() && in.is_fixed[v]));

@@ -35,6 +35,7 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   regular.is_fixed = in.is_fixed;
   regular.phantom_elements = in.phantom_elements;
   regular.phantom_vertices = in.phantom_vertices;
+  regular.corners_per_cell = in.corners_per_cell;
   for(std::size_t k = 0; k < in.elements.size(); ++k) {
     auto t = regular_simplex<d>();
     if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);

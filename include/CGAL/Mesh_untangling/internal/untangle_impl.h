@@ -68,7 +68,8 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
     Untangling_result first = untangle_directly<d>(in, options, protection, &direct_phantoms);
     const bool nothing_fixed = std::find(in.is_fixed.begin(), in.is_fixed.end(), true) == in.is_fixed.end();
     std::optional<std::vector<Eigen::Vector2d>> start;
-    if(nothing_fixed && in.phantom_elements == 0 && leaves_room_for_a_fallback(first, options)) {
+    // (the convex embedding is that of a triangulated disk, not of corner triangles)
+    if(nothing_fixed && in.phantom_elements == 0 && !in.has_cells() && leaves_room_for_a_fallback(first, options)) {
       const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
       start = tutte_start(in, P.reference_orientation);
     }
@@ -197,12 +198,17 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
 template <int d>
 void validate_stars(const Untangling_input<d>& in)
 {
-  validate_manifold_facets<d>(in);
+  // The corners of cells overlap by design: no star of theirs is checked.
+  if(in.has_cells() && in.number_of_mesh_elements() % in.corners_per_cell != 0)
+    throw std::invalid_argument(std::to_string(in.number_of_mesh_elements()) + " corner simplices do not make whole "
+                                "cells of " + std::to_string(in.corners_per_cell));
+  if(!in.has_cells()) validate_manifold_facets<d>(in);
   std::size_t degenerate = 0;
   const std::vector<int> orientation = target_orientations<d>(in, &degenerate);
   if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
+  if(in.has_cells()) return;
   const Invertibility_report report = check_mesh<d>(in, orientation);
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
@@ -262,13 +268,17 @@ Untangling_result cancelled_run(Untangling_input<d>& in, const std::vector<Eigen
 /// receives its new vertices.
 template <int d>
 Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& options,
-                           const Protection_request<d>& protection = Protection_request<d>(),
+                           const Protection_request<d>& requested = Protection_request<d>(),
                            Phantom_elements<d>* phantoms_used = nullptr, std::vector<Added_vertex>* added = nullptr)
 {
   try {
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
+    if(in.has_cells() && options.refinement)
+      throw std::invalid_argument("refinement splits the edges of simplices: it is not offered for cells");
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
     validate_stars<d>(in);
+    if(in.has_cells() && requested.supplied)
+      throw std::invalid_argument("phantom elements protect vertex stars of simplices, not the corners of cells");
   } catch(const std::invalid_argument& e) {
     Untangling_result invalid;
     invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
@@ -278,6 +288,11 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     return invalid;
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
+  // Phantoms are built on vertex stars, which the overlapping corners of
+  // cells do not form: cells go unprotected (see Untangling_input).
+  Protection_request<d> unprotected;
+  unprotected.enabled = false;
+  const Protection_request<d>& protection = in.has_cells() ? unprotected : requested;
   Untangling_result r;
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);

@@ -68,22 +68,26 @@ Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::v
   return check(as_arrays<d>(positions), elements, orientation, fixed);
 }
 
-/// The invertibility report on the mesh part of `in`: elements and stars.
-template <int d>
-Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
-{
-  return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
-    return check_local_invertibility<d>(arguments...);
-  });
-}
-
 /// Only what the element orientations decide (the inverted elements of the
-/// mesh part of `in`): the figures before a run, without the cost of the stars.
+/// mesh part of `in`, per cell for cells): the figures before a run, without
+/// the cost of the stars.
 template <int d>
 Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
 {
-  return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
+  const Invertibility_report report = check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
     return check_elements<d>(arguments...);
+  });
+  return in.has_cells() ? per_cell(report, in.corners_per_cell) : report;
+}
+
+/// The invertibility report on the mesh part of `in`: elements and stars;
+/// for cells, per cell, without stars (their corners form no complex).
+template <int d>
+Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
+{
+  if(in.has_cells()) return check_mesh_elements<d>(in, reference_orientation);
+  return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
+    return check_local_invertibility<d>(arguments...);
   });
 }
 

@@ -122,6 +122,46 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
   return on_boundary;
 }
 
+/// The boundary vertices of a mesh of cells given by their corner simplices
+/// (Untangling_input::corners_per_cell = K): vertices of the cell facets
+/// (quadrilateral edges, hexahedron faces) that belong to one cell only.
+/// The corners' own facets cannot tell: within one cell each quadrilateral
+/// edge is in two corner triangles, as are its diagonals.  Corner i of a
+/// cell has the cell's vertex i first; hexahedra are in VTK's order.
+template <int d>
+std::vector<char> cell_boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements,
+                                         std::size_t number_of_elements, std::size_t corners_per_cell)
+{
+  constexpr std::size_t facet_size = d == 2 ? 2 : 4;
+  using Facet = std::array<std::size_t, facet_size>;
+  static const int quadrilateral_edges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const int hexahedron_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  const std::size_t K = corners_per_cell, cells = std::min(number_of_elements, elements.size()) / K;
+  std::vector<Facet> facets;
+  facets.reserve(cells * (d == 2 ? 4 : 6));
+  for(std::size_t c = 0; c < cells; ++c) {
+    const auto vertex = [&](int i) { return elements[K * c + std::size_t(i)][0]; };
+    for(int f = 0; f < (d == 2 ? 4 : 6); ++f) {
+      Facet facet;
+      for(std::size_t i = 0; i < facet_size; ++i)
+        facet[i] = vertex(d == 2 ? quadrilateral_edges[f][i] : hexahedron_faces[f][i]);
+      std::sort(facet.begin(), facet.end());
+      facets.push_back(facet);
+    }
+  }
+  std::sort(facets.begin(), facets.end());
+  std::vector<char> on_boundary(n, 0);
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i;
+    while(j < facets.size() && facets[j] == facets[i]) ++j;
+    if(j - i == 1)
+      for(std::size_t v : facets[i]) on_boundary[v] = 1;
+    i = j;
+  }
+  return on_boundary;
+}
+
 } // namespace internal
 } // namespace Mesh_untangling
 } // namespace CGAL

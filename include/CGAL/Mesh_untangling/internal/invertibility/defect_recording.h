@@ -128,6 +128,28 @@ Invertibility_report check_elements(const std::vector<std::array<double, D>>& po
                         elements_with_only_fixed_vertices(simplices, is_fixed));
 }
 
+/// The report on the corner simplices of cells (`corners` of them per cell)
+/// as one on the cells: a cell is inverted when a corner is that a free
+/// vertex can move, else an input defect when a corner with fixed vertices
+/// only is inverted.  Ids are cell ids.
+inline Invertibility_report per_cell(const Invertibility_report& corners_report, std::size_t corners)
+{
+  Invertibility_report cells;
+  cells.number_of_elements = corners_report.number_of_elements / corners;
+  for(std::size_t k : corners_report.inverted_element_ids)
+    if(cells.inverted_element_ids.empty() || cells.inverted_element_ids.back() != k / corners)
+      cells.inverted_element_ids.push_back(k / corners);
+  for(std::size_t k : corners_report.input_defect_element_ids) {
+    const std::size_t c = k / corners;
+    if(!std::binary_search(cells.inverted_element_ids.begin(), cells.inverted_element_ids.end(), c) &&
+       (cells.input_defect_element_ids.empty() || cells.input_defect_element_ids.back() != c))
+      cells.input_defect_element_ids.push_back(c);
+  }
+  cells.inverted_elements = cells.inverted_element_ids.size();
+  cells.input_defects = cells.input_defect_element_ids.size();
+  return cells;
+}
+
 template <class T>
 void append(std::vector<T>& to, const std::vector<T>& from)
 { to.insert(to.end(), from.begin(), from.end()); }

@@ -1,0 +1,178 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Quadrilateral and hexahedral meshes through the public entry point
+// CGAL::untangle_cell_soup (issue 25, part 2): tangled grids end with every
+// corner simplex positive, fixed vertices bitwise in place; the corner rule,
+// the per-cell verdict, the scaled Jacobian and the errors on bad cells.
+#include <CGAL/Mesh_untangling/cell_invertibility.h>
+#include <CGAL/Mesh_untangling/corner_simplices.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/untangle_mesh.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace MU = CGAL::Mesh_untangling;
+using K = CGAL::Simple_cartesian<double>;
+
+namespace {
+
+int failures = 0;
+
+void check(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  if(!ok) ++failures;
+}
+
+/// A grid of the unit square (d = 2, quadrilaterals) or cube (d = 3,
+/// hexahedra) with n cells per side; interior vertices moved by up to
+/// `amplitude` cells per axis, the boundary fixed.
+template <int d>
+struct Grid
+{
+  using Point = std::conditional_t<d == 2, K::Point_2, K::Point_3>;
+  std::vector<Point> points, rest;
+  std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> cells;
+  std::vector<bool> fixed;
+};
+
+template <int d>
+Grid<d> make_grid(std::size_t n, double amplitude, unsigned seed)
+{
+  Grid<d> g;
+  const std::size_t m = n + 1;
+  const auto id = [m](std::size_t i, std::size_t j, std::size_t k) { return i + m * (j + m * k); };
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-amplitude / double(n), amplitude / double(n));
+  for(std::size_t k = 0; k < (d == 2 ? 1 : m); ++k)
+    for(std::size_t j = 0; j < m; ++j)
+      for(std::size_t i = 0; i < m; ++i) {
+        const bool boundary = i == 0 || j == 0 || i == n || j == n || (d == 3 && (k == 0 || k == n));
+        double x[3] = {double(i) / n, double(j) / n, double(k) / n};
+        if constexpr(d == 2) g.rest.emplace_back(x[0], x[1]);
+        else g.rest.emplace_back(x[0], x[1], x[2]);
+        if(!boundary)
+          for(int c = 0; c < d; ++c) x[c] += offset(random);
+        if constexpr(d == 2) g.points.emplace_back(x[0], x[1]);
+        else g.points.emplace_back(x[0], x[1], x[2]);
+        g.fixed.push_back(boundary);
+      }
+  for(std::size_t k = 0; k < (d == 2 ? 1 : n); ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i) {
+        if constexpr(d == 2)
+          g.cells.push_back({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0)});
+        else
+          g.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                             id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+      }
+  return g;
+}
+
+template <int d, typename Point>
+std::vector<std::array<double, d>> arrays(const std::vector<Point>& points)
+{
+  std::vector<std::array<double, d>> out(points.size());
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(int c = 0; c < d; ++c) out[v][c] = points[v][c];
+  return out;
+}
+
+template <int d>
+void untangles_a_grid(std::size_t n, double amplitude, bool with_rest)
+{
+  const std::string name = std::string(d == 2 ? "quadrilateral" : "hexahedral") + " grid " + std::to_string(n) +
+                           (with_rest ? ", rest given" : ", unit targets");
+  Grid<d> g = make_grid<d>(n, amplitude, 7);
+  const Grid<d> given = g;
+  const std::size_t inverted_given = MU::check_cells<d>(arrays<d>(g.points), g.cells).inverted_elements;
+  const auto fixed = boost::make_function_property_map<std::size_t, bool>([&](std::size_t v) { return bool(g.fixed[v]); });
+  const auto np = CGAL::parameters::vertex_is_constrained_map(fixed).maximum_running_time(120.);
+  const MU::Untangling_result r = with_rest
+    ? CGAL::untangle_cell_soup(g.points, g.cells, MU::parameters::rest_points(g.rest, np))
+    : CGAL::untangle_cell_soup(g.points, g.cells, np);
+  check(inverted_given > 0 && r.inverted_before == inverted_given,
+        name + ": the input has inverted cells (" + std::to_string(inverted_given) + "), as the result says (" +
+        std::to_string(r.inverted_before) + ")");
+  check(r.is_locally_invertible() && r.inverted_after == 0, name + ": untangled (" + MU::to_string(r.status) + ")");
+  check(r.number_of_elements == g.cells.size(), name + ": the result counts cells");
+  const auto report = MU::check_cells<d>(arrays<d>(g.points), g.cells);
+  check(report.inverted_elements == 0 && report.number_of_elements == g.cells.size(),
+        name + ": every corner simplex positive (exact)");
+  bool in_place = true;
+  for(std::size_t v = 0; v < g.points.size(); ++v)
+    if(g.fixed[v] && !(g.points[v] == given.points[v])) in_place = false;
+  check(in_place, name + ": fixed vertices bitwise in place");
+  double smallest = 1;
+  for(double j : MU::scaled_jacobians<d>(arrays<d>(g.points), g.cells)) smallest = std::min(smallest, j);
+  check(smallest > 0, name + ": min scaled Jacobian " + std::to_string(smallest) + " > 0");
+}
+
+void corner_rule()
+{
+  // every corner of the unit square and cube is positive, with weight 1/K of the cell
+  using P2 = K::Point_2;
+  using P3 = K::Point_3;
+  const std::vector<std::array<int, 4>> quad{{0, 1, 2, 3}};
+  const auto q = MU::corner_simplices<2>(quad, std::vector<P2>(), 4);
+  bool positive = q.simplices.size() == 4;
+  for(const auto& t : q.targets) positive = positive && CGAL::orientation(t[0], t[1], t[2]) == CGAL::POSITIVE;
+  check(positive && q.weights == std::vector<double>(4, 0.25), "unit square: 4 positive corners of weight 1/4");
+  const std::vector<std::array<int, 8>> hex{{0, 1, 2, 3, 4, 5, 6, 7}};
+  const auto h = MU::corner_simplices<3>(hex, std::vector<P3>(), 8);
+  positive = h.simplices.size() == 8;
+  for(const auto& t : h.targets) positive = positive && CGAL::orientation(t[0], t[1], t[2], t[3]) == CGAL::POSITIVE;
+  check(positive && h.weights == std::vector<double>(8, 0.125), "unit cube: 8 positive corners of weight 1/8");
+  // a trapezoid's corners have different areas but share the cell's weight evenly
+  const std::vector<P2> trapezoid{{0, 0}, {3, 0}, {2, 1}, {1, 1}};
+  const auto t = MU::corner_simplices<2>(quad, trapezoid, 4);
+  check(std::abs(t.weights[0] - 0.5) < 1e-15 && t.weights[0] == t.weights[3], "trapezoid of area 2: weights 2/4 each");
+  // the scaled Jacobian: 1 on the unit cube, negative when a corner is pushed through
+  std::vector<std::array<double, 3>> cube;
+  for(const auto& p : MU::internal::unit_cell<3, P3>()) cube.push_back({p.x(), p.y(), p.z()});
+  check(MU::scaled_jacobian<3>(cube, hex[0]) == 1., "unit cube: scaled Jacobian 1");
+  cube[6] = {0.2, 0.2, 0.2};
+  check(MU::scaled_jacobian<3>(cube, hex[0]) < 0 && MU::check_cells<3>(cube, hex).inverted_elements == 1,
+        "a cube with its vertex 6 pushed inside: negative scaled Jacobian, one inverted cell");
+}
+
+void bad_cells_are_invalid_input()
+{
+  std::vector<K::Point_2> points{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<std::vector<std::size_t>> triangle{{0, 1, 2}};
+  MU::Untangling_result r = CGAL::untangle_cell_soup(points, triangle);
+  check(r.status == MU::Untangling_status::INVALID_INPUT &&
+          r.message.find("quadrilateral 0 has 3 vertices") != std::string::npos,
+        "a 3-vertex cell: invalid input naming it (" + r.message + ")");
+  const std::vector<std::array<std::size_t, 4>> repeated{{0, 1, 1, 3}};
+  r = CGAL::untangle_cell_soup(points, repeated);
+  check(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("repeats vertex 1") != std::string::npos,
+        "a repeated vertex: invalid input (" + r.message + ")");
+  const std::vector<std::array<std::size_t, 4>> outside{{0, 1, 2, 9}};
+  r = CGAL::untangle_cell_soup(points, outside);
+  check(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("vertex 9") != std::string::npos,
+        "an id out of range: invalid input (" + r.message + ")");
+}
+
+} // namespace
+
+int main()
+{
+  corner_rule();
+  bad_cells_are_invalid_input();
+  untangles_a_grid<2>(12, 0.9, true);
+  untangles_a_grid<2>(12, 0.9, false);
+  untangles_a_grid<3>(5, 0.7, true);
+  untangles_a_grid<3>(5, 0.7, false);
+  std::printf("%s\n", failures == 0 ? "all passed" : "FAILURES");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
