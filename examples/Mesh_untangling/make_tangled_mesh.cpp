@@ -1,11 +1,12 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// make_tangled_mesh square|cube N AMPLITUDE SEED OUTPUT
-// Writes a structured mesh of the unit square (2 N^2 triangles) or cube
-// (6 N^3 tetrahedra) whose interior vertices are moved at random by up to
+// make_tangled_mesh square|cube|quadsquare|hexcube N AMPLITUDE SEED OUTPUT
+// Writes a structured mesh of the unit square (2 N^2 triangles, or N^2
+// quadrilaterals) or cube (6 N^3 tetrahedra, or N^3 hexahedra) whose interior vertices are moved at random by up to
 // AMPLITUDE grid cells, boundary fixed.  OUTPUT is a Du et al. .input file
-// (rest, tangled map and fixed vertices in one file) or any mesh format.
+// (rest, tangled map and fixed vertices in one file; simplices only) or any
+// mesh format that holds the elements.
 // The others hold less: .off, .vtk and .mesh one geometry, and all but .vtk
 // (its point data 'fixed') no fixed vertices.  Beside OUTPUT = NAME.EXT go
 // what the format cannot hold, NAME-fixed.txt and the rest grid
@@ -69,6 +70,8 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
       IO::Mesh_file grid;   // the geometry only
       grid.simplex_size = mesh.simplex_size;
       grid.simplices = mesh.simplices;
+      grid.cell_size = mesh.cell_size;
+      grid.cells = mesh.cells;
       grid.map = mesh.rest;
       grid.map_dimension = mesh.rest_dimension;
       IO::write_mesh_file(rest, grid);
@@ -87,7 +90,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
 
 int main(int argc, char** argv)
 {
-  const std::string usage = "usage: make_tangled_mesh square|cube N AMPLITUDE SEED OUTPUT\n";
+  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|hexcube N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }
   const std::string shape = argv[1];
   char* end = nullptr;
@@ -96,11 +99,13 @@ int main(int argc, char** argv)
   const double amplitude = std::strtod(argv[3], &end);
   const bool amplitude_ok = *end == 0 && amplitude >= 0 && amplitude <= 100;
   const long seed = std::strtol(argv[4], &end, 10);
-  if((shape != "square" && shape != "cube") || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
+  if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "hexcube") || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
     std::cerr << usage << "N in [2, 2000], AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
     return 2;
   }
-  auto mesh = shape == "square" ? Mesh_untangling_tools::make_square_grid(n) : Mesh_untangling_tools::make_cube_grid(n);
+  namespace T = Mesh_untangling_tools;
+  auto mesh = shape == "square" ? T::make_square_grid(n) : shape == "cube" ? T::make_cube_grid(n)
+            : shape == "quadsquare" ? T::make_quad_square_grid(n) : T::make_hex_cube_grid(n);
   Mesh_untangling_tools::perturb_interior(mesh, n, amplitude, static_cast<std::uint32_t>(seed));
   std::string arguments;
   try {
@@ -109,8 +114,10 @@ int main(int argc, char** argv)
     std::cerr << "make_tangled_mesh: error: " << e.what() << "\n";
     return 2;
   }
-  std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() << " "
-            << (mesh.simplex_size == 3 ? "triangles" : "tetrahedra") << ", " << mesh.fixed.size() << " fixed\n";
+  const char* kind = mesh.cell_size == 4 ? "quadrilaterals" : mesh.cell_size == 8 ? "hexahedra"
+                   : mesh.simplex_size == 3 ? "triangles" : "tetrahedra";
+  std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() + mesh.cells.size() << " "
+            << kind << ", " << mesh.fixed.size() << " fixed\n";
   if(!arguments.empty())
     std::cout << "untangle the same problem with: untangle_mesh " << shell_word(argv[5]) << arguments << "\n";
   return 0;

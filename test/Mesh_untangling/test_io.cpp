@@ -72,7 +72,8 @@ bool same_points(const std::vector<Point>& a, const std::vector<Point>& b)
 
 bool same_mesh(const Mesh_file& a, const Mesh_file& b)
 {
-  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.rest_dimension == b.rest_dimension
+  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size
+         && a.cells == b.cells && a.rest_dimension == b.rest_dimension
          && same_points(a.rest, b.rest) && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
          && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
 }
@@ -120,6 +121,25 @@ Mesh_file tet_mesh(bool with_rest)
   }
   m.map_dimension = 3;
   m.map = awkward_points(5, 3, 4);
+  return m;
+}
+
+// Two quadrilaterals (cell_size 4) or two hexahedra sharing a face (8).
+Mesh_file cell_mesh(int cell_size, int rest_dimension, int map_dimension)
+{
+  Mesh_file m;
+  m.cell_size = cell_size;
+  const std::size_t n = cell_size == 4 ? 6 : 12;
+  if(cell_size == 4)
+    m.cells = {{0, 1, 4, 3, 0, 0, 0, 0}, {1, 2, 5, 4, 0, 0, 0, 0}};
+  else
+    m.cells = {{0, 1, 4, 3, 6, 7, 10, 9}, {1, 2, 5, 4, 7, 8, 11, 10}};
+  m.rest_dimension = rest_dimension;
+  if(rest_dimension != 0)
+    m.rest = awkward_points(n, rest_dimension, 5);
+  m.map_dimension = map_dimension;
+  if(map_dimension != 0)
+    m.map = awkward_points(n, map_dimension, 6);
   return m;
 }
 
@@ -234,6 +254,31 @@ void test_round_trips()
   std::swap(as_rest.rest_dimension, as_rest.map_dimension);
   check_round_trip(__LINE__, "plain.obj", spatial, as_rest);
 
+  // Quadrilaterals and hexahedra (issue 25): every format that holds them.
+  const Mesh_file quads = cell_mesh(4, 2, 2);
+  check_round_trip(__LINE__, "quads.obj", quads, quads);
+  check_round_trip(__LINE__, "quads.off", quads, map_only(quads));
+  check_round_trip(__LINE__, "quads.vtk", quads, map_only(quads));
+  check_round_trip(__LINE__, "quads.mesh", quads, map_only(quads));
+  const Mesh_file spatial_quads = cell_mesh(4, 0, 3);
+  check_round_trip(__LINE__, "spatial-quads.off", spatial_quads, spatial_quads);
+  check_round_trip(__LINE__, "spatial-quads.mesh", spatial_quads, spatial_quads);
+  Mesh_file hexes = cell_mesh(8, 0, 3);
+  check_round_trip(__LINE__, "hexes.mesh", hexes, hexes);
+  hexes.has_fixed = true;
+  hexes.fixed = {0, 5, 11};
+  check_round_trip(__LINE__, "hexes.vtk", hexes, hexes);
+  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("hexes.off"), hexes), "OFF stores faces only, not hexahedra");
+  CHECK_WRITE_ERROR(IO::write_OBJ(temp_path("hexes.obj"), hexes), "OBJ stores faces only, not hexahedra");
+  CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("quads.input"), quads), "holds simplices only");
+  Mesh_file both = quads;
+  both.simplex_size = 3;
+  both.simplices = {{0, 1, 4, 0}};
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("both.vtk"), both), "both simplices and cells");
+  Mesh_file bad_hex = hexes;
+  bad_hex.cells[1][7] = 1;
+  CHECK_WRITE_ERROR(IO::write_MEDIT(temp_path("bad-hex.mesh"), bad_hex), "hexahedron 1: vertex 1 is repeated");
+
   const std::string handles = temp_path("round.handles");
   IO::write_handles(handles, {4, 0, 2});
   CHECK((IO::read_handles(handles, 5) == std::vector<std::size_t>{0, 2, 4}));
@@ -320,8 +365,19 @@ void test_off_errors()
   const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"; // 5 lines
   CHECK_READ_ERROR(read_off, "noheader.off", "3 1 0\n", 1, "missing 'OFF' header");
   CHECK_READ_ERROR(read_off, "coff.off", "# c\nCOFF\n", 2, "unsupported OFF variant 'COFF'");
-  CHECK_READ_ERROR(read_off, "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n", 7,
-                   "face 0 has 4 vertices; only triangles");
+  CHECK_READ_ERROR(read_off, "pentagon.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 0\n5 0 1 2 3 4\n", 8,
+                   "face 0 has 5 vertices; only triangles (3) and quadrilaterals (4)");
+  CHECK_READ_ERROR(read_off, "mixed.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n3 0 1 2\n", 8,
+                   "mixed cell kinds: face 1 is a triangle but face 0 (line 7) is a quadrilateral");
+  CHECK_READ_ERROR(read_off, "short-quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2\n", 7,
+                   "face 0: expected 4 vertex indices, got 3");
+  CHECK_READ_ERROR(read_off, "repeat-quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 1 2\n", 7,
+                   "face 0: vertex 1 is repeated");
+  {
+    const Mesh_file quad = IO::read_OFF(write_text("quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
+    CHECK(quad.cell_size == 4 && quad.simplex_size == 0 && quad.cells.size() == 1 && quad.cells[0][3] == 3 &&
+          quad.cell_lines == std::vector<std::size_t>{7} && quad.map_dimension == 2);
+  }
   CHECK_READ_ERROR(read_off, "trunc.off", head, 5, "truncated: the face block ends after 0 of 1 faces");
   CHECK_READ_ERROR(read_off, "trunc-v.off", "OFF\n3 1 0\n0 0 0\n", 3, "truncated: the vertex block ends after 1 of 3");
   CHECK_READ_ERROR(read_off, "range.off", head + "3 0 1 3\n", 6, "face 0: vertex index 3 is out of range [0, 2]");
@@ -349,8 +405,13 @@ void test_vtk_errors()
                    "expected UNSTRUCTURED_GRID, got 'POLYDATA'");
   CHECK_READ_ERROR(read_vtk, "mixed.vtk", head + "CELLS 3 14\n4 0 1 2 3\n3 0 1 2\n4 1 2 3 4\nCELL_TYPES 3\n10\n5\n10\n",
                    17, "mixed cell types: cell 1 is a triangle but cell 0 is a tetrahedron");
-  CHECK_READ_ERROR(read_vtk, "type.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n", 14, "cell 0 has VTK type 9");
-  CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\n", 12, "cell 0 has 8 vertices");
+  CHECK_READ_ERROR(read_vtk, "type.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n8\n", 14, "cell 0 has VTK type 8");
+  CHECK_READ_ERROR(read_vtk, "mixed-quad.vtk", head + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n9\n10\n", 16,
+                   "mixed cell types: cell 1 is a tetrahedron but cell 0 is a quadrilateral");
+  CHECK_READ_ERROR(read_vtk, "quad-as-hex.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n12\n", 14,
+                   "cell 0 has type 12 (hexahedron) but 4 vertices");
+  CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\n", 12, "cell 0: vertex 0 is repeated");
+  CHECK_READ_ERROR(read_vtk, "hexagon.vtk", head + "CELLS 1 7\n6 0 1 2 3 4 0\n", 12, "cell 0 has 6 vertices");
   CHECK_READ_ERROR(read_vtk, "size.vtk", head + "CELLS 2 9\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n", 11,
                    "CELLS announces a size of 9");
   CHECK_READ_ERROR(read_vtk, "typecount.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n", 13,
@@ -478,10 +539,23 @@ void test_medit_errors()
                    "is not a number: '1..5'");
   CHECK_READ_ERROR(read_medit, "keyword.mesh", head + "Geometry\n\"x.geom\"\n", 9,
                    "unsupported MEDIT keyword 'Geometry'");
-  CHECK_READ_ERROR(read_medit, "hex.mesh", head + "Hexahedra\n1\n1 2 3 4 1 2 3 4 0\n", 9,
-                   "Hexahedra are not supported");
-  CHECK_READ_ERROR(read_medit, "quad.mesh", head + "Quadrilaterals\n1\n1 2 3 4 0\n", 9,
-                   "Quadrilaterals are not supported");
+  CHECK_READ_ERROR(read_medit, "hex.mesh", head + "Hexahedra\n1\n1 2 3 4 1 2 3 4 0\n", 11,
+                   "hexahedron 1: vertex 1 is repeated");
+  CHECK_READ_ERROR(read_medit, "hex2d.mesh", "MeshVersionFormatted 2\nDimension 2\nHexahedra\n0\n", 3,
+                   "Hexahedra in a mesh of Dimension 2");
+  CHECK_READ_ERROR(read_medit, "mixed-volume.mesh", head + "Tetrahedra\n1\n1 2 3 4 0\nHexahedra\n1\n1 2 3 4 1 2 3 4 0\n", 12,
+                   "mixed cell kinds: Hexahedra and Tetrahedra (line 9)");
+  CHECK_READ_ERROR(read_medit, "mixed-faces.mesh", head + "Quadrilaterals\n1\n1 2 3 4 0\nTriangles\n1\n1 2 3 0\n", 9,
+                   "mixed cell kinds: Quadrilaterals and Triangles (line 12)");
+  CHECK_READ_ERROR(read_medit, "prism.mesh", head + "Prisms\n1\n1 2 3 4 1 2 0\n", 9, "Prisms are not supported");
+  {
+    // a hexahedral mesh with its boundary quadrilaterals: the hexahedra are the mesh
+    const Mesh_file hex = IO::read_MEDIT(write_text("hex-and-faces.mesh",
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n8\n0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\n0 0 1 0\n1 0 1 0\n"
+      "1 1 1 0\n0 1 1 0\nQuadrilaterals\n1\n1 2 3 4 1\nHexahedra\n1\n1 2 3 4 5 6 7 8 0\nEnd\n"));
+    CHECK(hex.cell_size == 8 && hex.simplex_size == 0 && hex.cells.size() == 1 && hex.cells[0][7] == 7 &&
+          hex.cell_lines == std::vector<std::size_t>{18} && hex.map_dimension == 3);
+  }
   CHECK_READ_ERROR(read_medit, "nodim.mesh", "MeshVersionFormatted 2\nVertices\n0\n", 2, "'Vertices' before Dimension");
   CHECK_READ_ERROR(read_medit, "dim.mesh", "MeshVersionFormatted 2\nDimension 4\n", 2, "Dimension is 4");
   CHECK_READ_ERROR(read_medit, "after-end.mesh", head + "End\nTriangles\n", 10, "unexpected data after End");
@@ -576,8 +650,16 @@ void test_obj_errors()
   CHECK_READ_ERROR(read_obj, "seam.obj", head + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", 11,
                    "vertex 2 has two different texture coordinates (vt 2 and vt 5): per-corner texture coordinates "
                    "(seams) are not supported");
-  CHECK_READ_ERROR(read_obj, "quad.obj", head + "f 1/1 2/2 4/4 3/3\n", 10,
-                   "face with 4 vertices; only triangles are supported");
+  CHECK_READ_ERROR(read_obj, "pentagon.obj", head + "f 1/1 2/2 4/4 3/3 1/1\n", 10,
+                   "face with 5 vertices; only triangles (3) and quadrilaterals (4) are supported");
+  CHECK_READ_ERROR(read_obj, "mixed-kinds.obj", head + "f 1/1 2/2 4/4 3/3\nf 1/1 2/2 3/3\n", 11,
+                   "mixed cell kinds: a triangle face, but the first face (line 10) is a quadrilateral");
+  CHECK_READ_ERROR(read_obj, "repeat-quad.obj", head + "f 1/1 2/2 2/2 3/3\n", 10, "face 1: vertex 2 is repeated");
+  {
+    const Mesh_file quad = IO::read_OBJ(write_text("quad.obj", head.substr(0, head.rfind("vt 5 5")) + "f 1/1 2/2 4/4 3/3\n"));
+    CHECK(quad.cell_size == 4 && quad.simplex_size == 0 && quad.cells.size() == 1 && quad.cells[0][2] == 3 &&
+          quad.map_dimension == 2 && quad.rest_dimension == 2);
+  }
   CHECK_READ_ERROR(read_obj, "range.obj", head + "f 1 2 5\n", 10, "face 1: vertex index 5 is out of range [1, 4]");
   CHECK_READ_ERROR(read_obj, "trange.obj", head + "f 1/1 2/10 3/3\n", 10, "texture index 10 is out of range [1, 5]");
   CHECK_READ_ERROR(read_obj, "zero.obj", head + "f 0 1 2\n", 10, "vertex index is 0 (OBJ indices start at 1)");

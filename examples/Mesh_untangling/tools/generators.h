@@ -87,13 +87,47 @@ inline Mesh_file make_cube_grid(std::size_t n)
   return m;
 }
 
+/// (n+1)^2 vertices on [0,1]^2, n^2 quadrilaterals (counter-clockwise); rest = map.
+inline Mesh_file make_quad_square_grid(std::size_t n)
+{
+  Mesh_file m = make_square_grid(n);
+  m.simplex_size = 0;
+  m.simplices.clear();
+  m.cell_size = 4;
+  auto id = [n](std::size_t i, std::size_t j) { return j * (n + 1) + i; };
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+      m.cells.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), 0, 0, 0, 0});
+  return m;
+}
+
+/// (n+1)^3 vertices on [0,1]^3, n^3 hexahedra (VTK's vertex order); rest = map.
+inline Mesh_file make_hex_cube_grid(std::size_t n)
+{
+  Mesh_file m;
+  m.cell_size = 8;
+  m.rest_dimension = m.map_dimension = 3;
+  auto id = [n](std::size_t i, std::size_t j, std::size_t k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for(std::size_t k = 0; k <= n; ++k)
+    for(std::size_t j = 0; j <= n; ++j)
+      for(std::size_t i = 0; i <= n; ++i)
+        m.rest.push_back({double(i) / n, double(j) / n, double(k) / n});
+  for(std::size_t k = 0; k < n; ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i)
+        m.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                           id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+  m.map = m.rest;
+  return m;
+}
+
 /// Fixes the boundary (coordinates at 0 or 1) and moves every interior vertex
 /// by a uniform random offset of up to `amplitude` grid cells per axis.
 inline void perturb_interior(Mesh_file& m, std::size_t n, double amplitude, std::uint32_t seed)
 {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> offset(-amplitude / n, amplitude / n);
-  const int dimension = m.simplex_size - 1;
+  const int dimension = m.cell_size != 0 ? (m.cell_size == 4 ? 2 : 3) : m.simplex_size - 1;
   m.has_fixed = true;
   m.fixed.clear();
   for(std::size_t v = 0; v < m.map.size(); ++v) {

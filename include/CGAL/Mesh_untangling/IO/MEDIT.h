@@ -14,9 +14,13 @@ namespace Mesh_untangling {
 namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
-/// Reads an ASCII MEDIT `.mesh` file into `map`: its Tetrahedra if it has
-/// any, else its Triangles; other blocks (Edges, Corners, ...) are ignored.
-/// \throws Read_error if the file is missing or malformed.
+/// Reads an ASCII MEDIT `.mesh` file into `map`: its volume elements if it
+/// has any (Tetrahedra into `simplices`, or Hexahedra, in VTK's vertex order,
+/// into `cells`), else its face elements (Triangles, or Quadrilaterals into
+/// `cells`); other blocks (Edges, Corners, ...) are ignored.
+/// \throws Read_error if the file is missing or malformed, or if both kinds
+/// of the dimension read are there (Tetrahedra and Hexahedra, or Triangles
+/// and Quadrilaterals: mixed cells).
 inline Mesh_file read_MEDIT(const std::string& path)
 {
   return internal::read_or_report_memory(path, [&] {
@@ -25,13 +29,13 @@ inline Mesh_file read_MEDIT(const std::string& path)
     Mesh_file mesh;
     internal::select_MEDIT_simplices(file, content, mesh);
     mesh.map = std::move(content.vertices);
-    mesh.map_dimension = content.dimension == 2 ? 2 : internal::dimension_of(mesh.map, mesh.simplex_size);
+    mesh.map_dimension = content.dimension == 2 ? 2 : internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
     return mesh;
   });
 }
 
 /// \ingroup PkgMeshUntanglingIO
-/// Writes the map (the rest if there is no map) and the simplices as an ASCII
+/// Writes the map (the rest if there is no map) and the simplices or cells as an ASCII
 /// MEDIT file, all references 0.
 /// \throws Write_error if the mesh is inconsistent or the file cannot be written.
 inline void write_MEDIT(const std::string& path, const Mesh_file& mesh)

@@ -18,11 +18,18 @@ namespace IO {
 /// Formats with one geometry (OFF, VTK, MEDIT) store it in `map` and leave
 /// `rest` empty; OBJ stores `v` in `rest` and `vt` in `map`; the Du et al.
 /// `.input` format fills everything. A dimension is 2 when the format is 2D
-/// or every z is exactly 0 (never for tetrahedra), else 3.
+/// or every z is exactly 0 (never for tetrahedra or hexahedra), else 3.
+///
+/// A mesh holds simplices or cells (quadrilaterals, hexahedra), never both:
+/// readers reject a file that mixes them, naming its line.  Hexahedra are in
+/// VTK's vertex order (MEDIT's is the same): 0 1 2 3 the bottom face, counter-
+/// clockwise seen from above, 4 5 6 7 the top face, vertex 4 above 0.
 struct Mesh_file
 {
-  int simplex_size = 0;                               ///< 3 triangles, 4 tetrahedra, 0 no element
+  int simplex_size = 0;                               ///< 3 triangles, 4 tetrahedra, 0 no simplex
   std::vector<std::array<std::size_t, 4>> simplices;  ///< 0-based; 4th entry unused (0) for triangles
+  int cell_size = 0;                                  ///< 4 quadrilaterals, 8 hexahedra, 0 no cell
+  std::vector<std::array<std::size_t, 8>> cells;      ///< 0-based; entries past `cell_size` unused (0)
   int rest_dimension = 0;                             ///< 0: no rest geometry in the file; else 2 or 3
   std::vector<std::array<double, 3>> rest;            ///< rest / parametric positions (z = 0 when 2D)
   int map_dimension = 0;                              ///< 0: no map in the file; else 2 or 3
@@ -32,6 +39,7 @@ struct Mesh_file
   /// The line of each simplex in the file read (1-based), for messages;
   /// empty for a mesh not read from a file. Writers ignore it.
   std::vector<std::size_t> simplex_lines;
+  std::vector<std::size_t> cell_lines;                ///< as `simplex_lines`, for the cells
 
   /// the number of vertices: that of the rest or of the map, whichever has more
   std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }

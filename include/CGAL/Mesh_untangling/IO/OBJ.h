@@ -14,21 +14,22 @@ namespace Mesh_untangling {
 namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
-/// Reads a triangle mesh from an OBJ file as in the LIM benchmark: `v` lines
-/// give the rest (parametric domain), per-vertex `vt` the map.
-/// \throws Read_error if the file is missing or malformed, has non-triangular
-/// faces, or has seams (one vertex with two different texture coordinates).
+/// Reads a triangle or quadrilateral mesh from an OBJ file as in the LIM
+/// benchmark: `v` lines give the rest (parametric domain), per-vertex `vt`
+/// the map.  Triangles go to `simplices`, quadrilaterals to `cells`.
+/// \throws Read_error if the file is missing or malformed, has faces of
+/// another size or of both sizes, or has seams (one vertex with two
+/// different texture coordinates).
 inline Mesh_file read_OBJ(const std::string& path)
 {
   return internal::read_or_report_memory(path, [&] {
     internal::Text_file file(path, '#');
     internal::OBJ_content content = internal::read_OBJ_content(file);
     Mesh_file mesh;
-    mesh.simplex_size = 3;
     internal::check_OBJ_faces(file, content, mesh);
     internal::build_OBJ_map(file, content, mesh);
     mesh.rest = std::move(content.positions);
-    mesh.rest_dimension = internal::dimension_of(mesh.rest, 3);
+    mesh.rest_dimension = internal::dimension_of(mesh.rest, 3);   // (quadrilaterals too: planar or not)
     return mesh;
   });
 }
@@ -36,12 +37,13 @@ inline Mesh_file read_OBJ(const std::string& path)
 /// \ingroup PkgMeshUntanglingIO
 /// Writes `v` = rest (with z), `vt` = map and faces `f i/i j/j k/k`. A mesh
 /// with only one geometry is written as `v` lines and faces `f i j k`.
-/// \throws Write_error if the mesh has tetrahedra, a 3D map next to a rest,
+/// Quadrilaterals are written as faces of 4 corners.
+/// \throws Write_error if the mesh has tetrahedra or hexahedra, a 3D map next to a rest,
 /// is inconsistent, or the file cannot be written.
 inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
-  internal::check_triangles_only(path, mesh, "OBJ");
+  internal::check_faces_only(path, mesh, "OBJ");
   const bool textured = mesh.rest_dimension != 0 && mesh.map_dimension != 0;
   if(textured && mesh.map_dimension != 2)
     throw Write_error(path, "OBJ texture coordinates are 2D, but map_dimension is 3");
@@ -58,15 +60,19 @@ inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
     internal::write_point(out, mesh.map[v], 2);
     out << '\n';
   }
-  for(const std::array<std::size_t, 4>& f : mesh.simplices) {
+  const auto write_face = [&](const auto& f, int size) {
     out << 'f';
-    for(int c = 0; c < 3; ++c) {
+    for(int c = 0; c < size; ++c) {
       out << ' ' << f[c] + 1;
       if(textured)
         out << '/' << f[c] + 1;
     }
     out << '\n';
-  }
+  };
+  for(const std::array<std::size_t, 4>& f : mesh.simplices)
+    write_face(f, 3);
+  for(const std::array<std::size_t, 8>& f : mesh.cells)
+    write_face(f, 4);
   file.commit();
 }
 

@@ -65,25 +65,29 @@ inline void read_OFF_vertices(Text_file& file, std::size_t count, Mesh_file& mes
 }
 
 // A face line may end with a color (up to 4 numbers), which is ignored.
+// Faces are triangles or quadrilaterals (`size`: their vertex count).
 inline std::array<std::size_t, 4> read_OFF_face(const Text_file& file, const std::vector<Token>& tokens,
-                                                std::size_t i, std::size_t number_of_vertices)
+                                                std::size_t i, std::size_t number_of_vertices, std::size_t& size)
 {
   const std::string what = "face " + std::to_string(i);
   const std::size_t line = tokens[0].line;
-  std::size_t size = to_size(file, tokens[0], "vertex count of " + what);
-  if(size != 3)
-    file.fail(line, what + " has " + std::to_string(size) + " vertices; only triangles are supported");
-  if(tokens.size() < 4)
-    file.fail(line, what + ": expected 3 vertex indices, got " + std::to_string(tokens.size() - 1));
-  for(std::size_t t = 4; t < tokens.size(); ++t) {
+  size = to_size(file, tokens[0], "vertex count of " + what);
+  if(size != 3 && size != 4)
+    file.fail(line, what + " has " + std::to_string(size) + " vertices; only triangles (3) and quadrilaterals (4) "
+                           "are supported");
+  if(tokens.size() < size + 1)
+    file.fail(line, what + ": expected " + std::to_string(size) + " vertex indices, got "
+                        + std::to_string(tokens.size() - 1));
+  for(std::size_t t = size + 1; t < tokens.size(); ++t) {
     double ignored;
-    if(tokens.size() > 8 || parse_double(tokens[t].text, ignored) != Number_status::OK)
-      file.fail(line, what + ": unexpected " + quote_token(tokens[t].text) + " after the 3 vertex indices");
+    if(tokens.size() > size + 5 || parse_double(tokens[t].text, ignored) != Number_status::OK)
+      file.fail(line, what + ": unexpected " + quote_token(tokens[t].text) + " after the " + std::to_string(size)
+                          + " vertex indices");
   }
   std::array<std::size_t, 4> face = {0, 0, 0, 0};
-  for(int c = 0; c < 3; ++c)
+  for(std::size_t c = 0; c < size; ++c)
     face[c] = to_size(file, tokens[c + 1], "vertex index of " + what);
-  std::string defect = simplex_defect(face, 3, number_of_vertices, 0);
+  std::string defect = simplex_defect(face, static_cast<int>(size), number_of_vertices, 0);
   if(!defect.empty())
     file.fail(line, what + ": " + defect);
   return face;
@@ -92,14 +96,35 @@ inline std::array<std::size_t, 4> read_OFF_face(const Text_file& file, const std
 inline void read_OFF_faces(Text_file& file, std::size_t count, Mesh_file& mesh)
 {
   std::vector<Token> tokens;
-  mesh.simplices.reserve(file.sane_capacity(count));
+  std::size_t first_size = 0, first_line = 0;
   for(std::size_t i = 0; i < count; ++i) {
     if(!file.next_line(tokens))
       file.fail_truncated("the face block ends after " + std::to_string(i) + " of "
                           + std::to_string(count) + " faces");
-    mesh.simplices.push_back(read_OFF_face(file, tokens, i, mesh.map.size()));
-    mesh.simplex_lines.push_back(tokens[0].line);
+    std::size_t size = 0;
+    const std::array<std::size_t, 4> face = read_OFF_face(file, tokens, i, mesh.map.size(), size);
+    if(i == 0) {
+      first_size = size;
+      first_line = tokens[0].line;
+      if(size == 4) mesh.cells.reserve(file.sane_capacity(count));
+      else mesh.simplices.reserve(file.sane_capacity(count));
+    } else if(size != first_size) {
+      file.fail(tokens[0].line, "mixed cell kinds: face " + std::to_string(i) + " is a "
+                                    + (size == 4 ? "quadrilateral" : "triangle") + " but face 0 (line "
+                                    + std::to_string(first_line) + ") is a "
+                                    + (first_size == 4 ? "quadrilateral" : "triangle")
+                                    + "; only one element type is supported");
+    }
+    if(size == 4) {
+      mesh.cells.push_back({face[0], face[1], face[2], face[3], 0, 0, 0, 0});
+      mesh.cell_lines.push_back(tokens[0].line);
+    } else {
+      mesh.simplices.push_back(face);
+      mesh.simplex_lines.push_back(tokens[0].line);
+    }
   }
+  mesh.simplex_size = first_size == 4 ? 0 : 3;   // (a file of no face holds triangles)
+  mesh.cell_size = first_size == 4 ? 4 : 0;
   if(file.next_line(tokens))
     file.fail(tokens[0].line, "unexpected data after the last face: " + quote_token(tokens[0].text));
 }
@@ -107,7 +132,9 @@ inline void read_OFF_faces(Text_file& file, std::size_t count, Mesh_file& mesh)
 } // namespace internal
 
 /// \ingroup PkgMeshUntanglingIO
-/// Reads a triangle mesh from a plain ASCII OFF file into `map`.
+/// Reads a triangle or quadrilateral mesh from a plain ASCII OFF file into
+/// `map` (triangles into `simplices`, quadrilaterals into `cells`; a file
+/// that has both is rejected).
 /// \throws Read_error if the file is missing, not a regular file, malformed
 /// or too large for the memory.
 inline Mesh_file read_OFF(const std::string& path)
@@ -116,7 +143,6 @@ inline Mesh_file read_OFF(const std::string& path)
     internal::Text_file file(path, '#');
     std::pair<std::size_t, std::size_t> counts = internal::read_OFF_header(file);
     Mesh_file mesh;
-    mesh.simplex_size = 3;
     internal::read_OFF_vertices(file, counts.first, mesh);
     internal::read_OFF_faces(file, counts.second, mesh);
     mesh.map_dimension = internal::dimension_of(mesh.map, 3);
@@ -125,23 +151,25 @@ inline Mesh_file read_OFF(const std::string& path)
 }
 
 /// \ingroup PkgMeshUntanglingIO
-/// Writes the triangles and the map (the rest if there is no map) as OFF,
-/// with z = 0 for planar positions.
+/// Writes the triangles or quadrilaterals and the map (the rest if there is
+/// no map) as OFF, with z = 0 for planar positions.
 /// \throws Write_error if the mesh is inconsistent or the file cannot be written.
 inline void write_OFF(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
-  internal::check_triangles_only(path, mesh, "OFF");
+  internal::check_faces_only(path, mesh, "OFF");
   const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
   internal::Atomic_output_file file(path);
   std::ostream& out = file.stream();
-  out << "OFF\n" << points.size() << ' ' << mesh.simplices.size() << " 0\n";
+  out << "OFF\n" << points.size() << ' ' << mesh.simplices.size() + mesh.cells.size() << " 0\n";
   for(const std::array<double, 3>& p : points) {
     internal::write_point(out, p, 3);
     out << '\n';
   }
   for(const std::array<std::size_t, 4>& f : mesh.simplices)
     out << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+  for(const std::array<std::size_t, 8>& f : mesh.cells)
+    out << "4 " << f[0] << ' ' << f[1] << ' ' << f[2] << ' ' << f[3] << '\n';
   file.commit();
 }
 

@@ -164,11 +164,13 @@ inline Mesh_file read_TLC_input(const std::string& path)
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the four blocks of the Du et al. format; `fixed` gives the handle
 /// block (empty when there is none).
-/// \throws Write_error if the mesh lacks the rest or the map, is inconsistent,
-/// or the file cannot be written.
+/// \throws Write_error if the mesh lacks the rest or the map, has cells (the
+/// format holds simplices only), is inconsistent, or the file cannot be written.
 inline void write_TLC_input(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
+  if(!mesh.cells.empty())
+    throw Write_error(path, "the .input format holds simplices only, not quadrilaterals or hexahedra");
   if(mesh.rest_dimension == 0 || mesh.map_dimension == 0)
     throw Write_error(path, "the .input format needs both the rest and the map positions");
   internal::Atomic_output_file file(path);

@@ -16,7 +16,9 @@ namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a legacy ASCII VTK unstructured grid of triangles (type 5) or
-/// tetrahedra (type 10) into `map`.  A point scalar named `fixed` (0 or 1 per
+/// tetrahedra (type 10) into `simplices`, or of quadrilaterals (type 9) or
+/// hexahedra (type 12, VTK's vertex order) into `cells`, and the points into
+/// `map`; a file that mixes types is rejected, naming the line.  A point scalar named `fixed` (0 or 1 per
 /// point, as write_VTK() writes it) gives the fixed vertices (`has_fixed`
 /// and `fixed`); other point and cell data, field data and the array
 /// metadata that VTK 8 and later write are skipped.
@@ -32,15 +34,15 @@ inline Mesh_file read_VTK(const std::string& path)
     std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
     internal::read_VTK_cell_types(file, cells, mesh);
     internal::read_VTK_attributes(file, mesh);
-    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.simplex_size);
+    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
     return mesh;
   });
 }
 
 /// \ingroup PkgMeshUntanglingIO
-/// Writes the simplices and the map (the rest if there is no map) as a legacy
-/// ASCII VTK unstructured grid, with optional scalar fields (one value per
-/// simplex, resp. per vertex; `int` or `double`), e.g. to inspect inverted
+/// Writes the simplices or cells and the map (the rest if there is no map) as
+/// a legacy ASCII VTK unstructured grid, with optional scalar fields (one
+/// value per simplex or cell, resp. per vertex; `int` or `double`), e.g. to inspect inverted
 /// elements in ParaView.  When the mesh has a list of fixed vertices
 /// (`has_fixed`), they are written first as the point scalar `fixed` (1 for
 /// a fixed vertex), which read_VTK() reads back; a point field of that name
@@ -52,7 +54,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
 {
   internal::check_for_writing(path, mesh);
   const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
-  internal::check_VTK_fields(path, cell_fields, mesh.simplices.size(), "cell");
+  internal::check_VTK_fields(path, cell_fields, mesh.simplices.size() + mesh.cells.size(), "cell");
   internal::check_VTK_fields(path, point_fields, points.size(), "point");
   const VTK_fields all_point_fields = internal::VTK_point_fields(path, mesh, point_fields, points.size());
   internal::Atomic_output_file file(path);
@@ -64,7 +66,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
     out << '\n';
   }
   internal::write_VTK_cells(out, mesh);
-  internal::write_VTK_fields(out, cell_fields, mesh.simplices.size(), "CELL_DATA");
+  internal::write_VTK_fields(out, cell_fields, mesh.simplices.size() + mesh.cells.size(), "CELL_DATA");
   internal::write_VTK_fields(out, all_point_fields, points.size(), "POINT_DATA");
   file.commit();
 }

@@ -31,7 +31,7 @@ namespace internal {
 
 struct MEDIT_elements
 {
-  std::vector<std::array<std::size_t, 4>> ids;  // 1-based, as in the file
+  std::vector<std::array<std::size_t, 8>> ids;  // 1-based, as in the file
   std::vector<std::size_t> lines;
   std::size_t header_line = 0;                  // 0: no such block
 };
@@ -43,7 +43,8 @@ struct MEDIT_content
   std::vector<std::array<double, 3>> vertices;
   MEDIT_elements triangles;
   MEDIT_elements tetrahedra;
-  std::size_t quadrilaterals_line = 0;          // of a non-empty block
+  MEDIT_elements quadrilaterals;
+  MEDIT_elements hexahedra;
 };
 
 // A word where a number should be means the block has fewer entries than
@@ -129,7 +130,10 @@ inline void read_MEDIT_vertices(Text_file& file, const Token& keyword, MEDIT_con
   }
 }
 
-inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, MEDIT_elements& block)
+// `k` vertices per element: 3 triangles, 4 tetrahedra (or quadrilaterals,
+// `cell`), 8 hexahedra.
+inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, MEDIT_elements& block,
+                                bool cell = false)
 {
   if(block.header_line != 0)
     file.fail(keyword.line, "second " + std::string(keyword.text) + " block (the first is at line "
@@ -139,8 +143,8 @@ inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, ME
   block.ids.reserve(file.sane_capacity(count));
   block.lines.reserve(file.sane_capacity(count));
   for(std::size_t i = 0; i < count; ++i) {
-    const auto what = [&] { return std::string(simplex_name(k)) + " " + std::to_string(i + 1); };
-    std::array<std::size_t, 4> ids = {0, 0, 0, 0};
+    const auto what = [&] { return std::string(cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1); };
+    std::array<std::size_t, 8> ids = {0, 0, 0, 0, 0, 0, 0, 0};
     std::size_t line = 0, first_line = 0;
     for(int c = 0; c < k; ++c) {
       ids[c] = next_MEDIT_index(file, keyword, i, count, line, [&] { return "vertex index of " + what(); });
@@ -181,7 +185,7 @@ inline std::size_t MEDIT_ignored_width(std::string_view keyword, int dimension)
 inline std::size_t MEDIT_other_cell_width(std::string_view keyword)
 {
   struct Entry { const char* keyword; std::size_t width; };
-  const Entry table[] = {{"Quadrilaterals", 5}, {"Hexahedra", 9}, {"Prisms", 7}, {"Pyramids", 6}};
+  const Entry table[] = {{"Prisms", 7}, {"Pyramids", 6}};
   for(const Entry& e : table)
     if(same_keyword(keyword, e.keyword))
       return e.width;
@@ -214,11 +218,15 @@ inline void read_MEDIT_block(Text_file& file, const Token& keyword, MEDIT_conten
     return read_MEDIT_vertices(file, keyword, content);
   if(same_keyword(keyword.text, "Triangles"))
     return read_MEDIT_elements(file, keyword, 3, content.triangles);
-  if(same_keyword(keyword.text, "Tetrahedra")) {
+  if(same_keyword(keyword.text, "Tetrahedra") || same_keyword(keyword.text, "Hexahedra")) {
     if(content.dimension == 2)
-      file.fail(keyword.line, "Tetrahedra in a mesh of Dimension 2");
+      file.fail(keyword.line, std::string(keyword.text) + " in a mesh of Dimension 2");
+    if(same_keyword(keyword.text, "Hexahedra"))
+      return read_MEDIT_elements(file, keyword, 8, content.hexahedra, true);
     return read_MEDIT_elements(file, keyword, 4, content.tetrahedra);
   }
+  if(same_keyword(keyword.text, "Quadrilaterals"))
+    return read_MEDIT_elements(file, keyword, 4, content.quadrilaterals, true);
   if(std::size_t width = MEDIT_ignored_width(keyword.text, content.dimension)) {
     skip_MEDIT_block(file, keyword, width);
     return;
@@ -226,10 +234,8 @@ inline void read_MEDIT_block(Text_file& file, const Token& keyword, MEDIT_conten
   if(std::size_t width = MEDIT_other_cell_width(keyword.text)) {
     if(skip_MEDIT_block(file, keyword, width) == 0)
       return;
-    if(!same_keyword(keyword.text, "Quadrilaterals"))
-      file.fail(keyword.line, std::string(keyword.text) + " are not supported (only triangles and tetrahedra)");
-    content.quadrilaterals_line = keyword.line;
-    return;
+    file.fail(keyword.line, std::string(keyword.text) + " are not supported (only triangles, quadrilaterals, "
+                                                        "tetrahedra and hexahedra)");
   }
   file.fail(keyword.line, "unsupported MEDIT keyword " + quote_token(keyword.text));
 }
@@ -255,27 +261,38 @@ inline MEDIT_content read_MEDIT_content(Text_file& file)
 }
 
 // Tetrahedra win: the Triangles of a tet mesh are only its boundary.
+// The elements of the highest dimension are the mesh: tetrahedra or
+// hexahedra over triangles or quadrilaterals (a volume mesh lists its
+// boundary faces too).  Two kinds of that dimension are mixed cells: rejected.
 inline void select_MEDIT_simplices(const Text_file& file, const MEDIT_content& content, Mesh_file& mesh)
 {
-  const bool tets = !content.tetrahedra.ids.empty();
-  const MEDIT_elements& block = tets ? content.tetrahedra : content.triangles;
-  if(!tets && content.quadrilaterals_line != 0)
-    file.fail(content.quadrilaterals_line, "Quadrilaterals are not supported (only triangles and tetrahedra)");
-  mesh.simplex_size = tets ? 4 : (block.ids.empty() ? 0 : 3);
-  mesh.simplices.reserve(block.ids.size());
+  struct Kind { const MEDIT_elements* block; const char* name; int size; bool cell; };
+  const bool volume = !content.tetrahedra.ids.empty() || !content.hexahedra.ids.empty();
+  const Kind kinds[2] = {
+    volume ? Kind{&content.tetrahedra, "Tetrahedra", 4, false} : Kind{&content.triangles, "Triangles", 3, false},
+    volume ? Kind{&content.hexahedra, "Hexahedra", 8, true} : Kind{&content.quadrilaterals, "Quadrilaterals", 4, true}};
+  if(!kinds[0].block->ids.empty() && !kinds[1].block->ids.empty())
+    file.fail(kinds[1].block->header_line, std::string("mixed cell kinds: ") + kinds[1].name + " and " + kinds[0].name
+                                               + " (line " + std::to_string(kinds[0].block->header_line)
+                                               + "); only one element type is supported");
+  const Kind& kind = kinds[1].block->ids.empty() ? kinds[0] : kinds[1];
+  const MEDIT_elements& block = *kind.block;
+  const int k = block.ids.empty() && !kind.cell ? 0 : kind.size;
+  (kind.cell ? mesh.cell_size : mesh.simplex_size) = k;
   for(std::size_t i = 0; i < block.ids.size(); ++i) {
-    std::string defect = simplex_defect(block.ids[i], mesh.simplex_size, content.vertices.size(), 1);
+    std::string defect = simplex_defect(block.ids[i], k, content.vertices.size(), 1);
     if(!defect.empty())
-      file.fail(block.lines[i], std::string(simplex_name(mesh.simplex_size)) + " " + std::to_string(i + 1)
+      file.fail(block.lines[i], std::string(kind.cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1)
                                     + ": " + defect);
-    mesh.simplices.push_back(to_zero_based(block.ids[i], mesh.simplex_size, 1));
+    const std::array<std::size_t, 8> ids = to_zero_based(block.ids[i], k, 1);
+    if(kind.cell)
+      mesh.cells.push_back(ids);
+    else
+      mesh.simplices.push_back({ids[0], ids[1], ids[2], ids[3]});
   }
-  mesh.simplex_lines = block.lines;
+  (kind.cell ? mesh.cell_lines : mesh.simplex_lines) = block.lines;
 }
 
-// A planar mesh read from a 3D file may have a z of -0.0, which a
-// Dimension 2 file would give back as +0.0: such a mesh is written in 3D,
-// so that reading what was written gives the same bits.
 inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points)
 {
   for(const std::array<double, 3>& p : points)
@@ -286,6 +303,16 @@ inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points
 
 inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
 {
+  if(!mesh.cells.empty()) {
+    const int k = mesh.cell_size;
+    out << (k == 8 ? "Hexahedra\n" : "Quadrilaterals\n") << mesh.cells.size() << '\n';
+    for(const std::array<std::size_t, 8>& s : mesh.cells) {
+      for(int c = 0; c < k; ++c)
+        out << s[c] + 1 << ' ';
+      out << "0\n";
+    }
+    out << '\n';
+  }
   if(mesh.simplices.empty())
     return;
   const int k = mesh.simplex_size;

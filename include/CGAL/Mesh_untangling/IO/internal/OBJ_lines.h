@@ -30,7 +30,8 @@ namespace internal {
 struct OBJ_face
 {
   std::array<std::size_t, 4> vertices;  // 1-based
-  std::array<std::size_t, 3> textures;  // 1-based; 0: none
+  std::array<std::size_t, 4> textures;  // 1-based; 0: none
+  std::size_t size;                     // 3 triangle, 4 quadrilateral
   std::size_t line;
 };
 
@@ -86,11 +87,16 @@ inline void read_OBJ_corner(const Text_file& file, const Token& corner, const OB
 inline void read_OBJ_face(const Text_file& file, const std::vector<Token>& tokens, OBJ_content& content)
 {
   const std::size_t line = tokens[0].line;
-  if(tokens.size() != 4)
-    file.fail(line, "face with " + std::to_string(file.tokens_on_line() - 1) + " vertices; only triangles are supported");
-  OBJ_face face{{0, 0, 0, 0}, {0, 0, 0}, line};
-  for(int c = 0; c < 3; ++c)
-    read_OBJ_corner(file, tokens[c + 1], content, face, c);
+  if(tokens.size() != 4 && tokens.size() != 5)
+    file.fail(line, "face with " + std::to_string(file.tokens_on_line() - 1) + " vertices; only triangles (3) and "
+                    "quadrilaterals (4) are supported");
+  OBJ_face face{{0, 0, 0, 0}, {0, 0, 0, 0}, tokens.size() - 1, line};
+  if(!content.faces.empty() && content.faces.front().size != face.size)
+    file.fail(line, "mixed cell kinds: a " + std::string(face.size == 4 ? "quadrilateral" : "triangle")
+                    + " face, but the first face (line " + std::to_string(content.faces.front().line) + ") is a "
+                    + (face.size == 4 ? "triangle" : "quadrilateral") + "; only one element type is supported");
+  for(std::size_t c = 0; c < face.size; ++c)
+    read_OBJ_corner(file, tokens[c + 1], content, face, int(c));
   content.faces.push_back(face);
 }
 
@@ -151,18 +157,28 @@ inline OBJ_content read_OBJ_content(Text_file& file)
   return content;
 }
 
+// Triangles go to `simplices`, quadrilaterals to `cells` (read_OBJ_face()
+// lets one kind in).
 inline void check_OBJ_faces(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
 {
   const std::size_t n = content.positions.size();
-  mesh.simplices.reserve(content.faces.size());
-  mesh.simplex_lines.reserve(content.faces.size());
+  const bool quadrilaterals = !content.faces.empty() && content.faces.front().size == 4;
+  mesh.simplex_size = quadrilaterals ? 0 : 3;
+  mesh.cell_size = quadrilaterals ? 4 : 0;
   for(std::size_t i = 0; i < content.faces.size(); ++i) {
     const OBJ_face& face = content.faces[i];
-    std::string defect = simplex_defect(face.vertices, 3, n, 1);
+    const int size = static_cast<int>(face.size);
+    std::string defect = simplex_defect(face.vertices, size, n, 1);
     if(!defect.empty())
       file.fail(face.line, "face " + std::to_string(i + 1) + ": " + defect);
-    mesh.simplices.push_back(to_zero_based(face.vertices, 3, 1));
-    mesh.simplex_lines.push_back(face.line);
+    const std::array<std::size_t, 4> ids = to_zero_based(face.vertices, size, 1);
+    if(quadrilaterals) {
+      mesh.cells.push_back({ids[0], ids[1], ids[2], ids[3], 0, 0, 0, 0});
+      mesh.cell_lines.push_back(face.line);
+    } else {
+      mesh.simplices.push_back(ids);
+      mesh.simplex_lines.push_back(face.line);
+    }
   }
 }
 
@@ -196,8 +212,8 @@ inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mes
     return;
   std::vector<std::size_t> texture_of(content.positions.size(), 0);
   for(const OBJ_face& face : content.faces)
-    for(int c = 0; c < 3; ++c)
-      assign_OBJ_texture(file, content, face, c, texture_of);
+    for(std::size_t c = 0; c < face.size; ++c)
+      assign_OBJ_texture(file, content, face, int(c), texture_of);
   mesh.map.reserve(texture_of.size());
   for(std::size_t v = 0; v < texture_of.size(); ++v) {
     if(texture_of[v] == 0)

@@ -32,7 +32,7 @@ namespace internal {
 
 struct VTK_cell
 {
-  std::array<std::size_t, 4> ids;
+  std::array<std::size_t, 8> ids;
   std::size_t size;
   std::size_t line;
 };
@@ -246,10 +246,11 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count,
   if(same_keyword(size_token.text, "OFFSETS"))
     file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
   const std::string what = "cell " + std::to_string(i);
-  VTK_cell cell{{0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line};
-  if(cell.size != 3 && cell.size != 4)
+  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line};
+  if(cell.size != 3 && cell.size != 4 && cell.size != 8)
     file.fail(cell.line, what + " has " + std::to_string(cell.size)
-                             + " vertices; only triangles (3) and tetrahedra (4) are supported");
+                             + " vertices; only triangles (3), tetrahedra and quadrilaterals (4) and hexahedra (8) "
+                               "are supported");
   for(std::size_t c = 0; c < cell.size; ++c)
     cell.ids[c] = to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what);
   std::string defect = simplex_defect(cell.ids, static_cast<int>(cell.size), n, 0);
@@ -284,6 +285,16 @@ inline int VTK_simplex_size(std::size_t type)
   return type == 10 ? 4 : type == 5 ? 3 : 0;
 }
 
+inline int VTK_cell_size(std::size_t type)
+{
+  return type == 12 ? 8 : type == 9 ? 4 : 0;
+}
+
+inline std::string VTK_type_name(std::size_t type)
+{
+  return VTK_simplex_size(type) != 0 ? simplex_name(VTK_simplex_size(type)) : cell_name(VTK_cell_size(type));
+}
+
 inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh)
 {
   expect_VTK_section(file, "CELL_TYPES");
@@ -294,24 +305,33 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
   if(count != cells.size())
     file.fail(count_token.line, "CELL_TYPES has " + std::to_string(count) + " entries but CELLS has "
                                     + std::to_string(cells.size()));
-  mesh.simplices.reserve(cells.size());
+  std::size_t first_type = 0;
   for(std::size_t i = 0; i < count; ++i) {
     Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
     const std::string what = "cell " + std::to_string(i);
     const std::size_t type = to_size(file, t, "type of " + what);
-    const int k = VTK_simplex_size(type);
-    if(k == 0)
+    const int k = VTK_simplex_size(type), c = VTK_cell_size(type);
+    if(k == 0 && c == 0)
       file.fail(t.line, what + " has VTK type " + std::to_string(type)
-                            + "; only triangles (5) and tetrahedra (10) are supported");
-    if(i > 0 && k != mesh.simplex_size)
-      file.fail(t.line, "mixed cell types: " + what + " is a " + simplex_name(k) + " but cell 0 is a "
-                            + simplex_name(mesh.simplex_size) + "; only one element type is supported");
-    if(static_cast<std::size_t>(k) != cells[i].size)
-      file.fail(t.line, what + " has type " + std::to_string(type) + " (" + simplex_name(k) + ") but "
+                            + "; only triangles (5), tetrahedra (10), quadrilaterals (9) and hexahedra (12) are "
+                              "supported");
+    if(i == 0)
+      first_type = type;
+    else if(type != first_type)
+      file.fail(t.line, "mixed cell types: " + what + " is a " + VTK_type_name(type) + " but cell 0 is a "
+                            + VTK_type_name(first_type) + "; only one element type is supported");
+    if(static_cast<std::size_t>(k + c) != cells[i].size)
+      file.fail(t.line, what + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
                             + std::to_string(cells[i].size) + " vertices");
-    mesh.simplex_size = k;
-    mesh.simplices.push_back(cells[i].ids);
-    mesh.simplex_lines.push_back(cells[i].line);
+    if(k != 0) {
+      mesh.simplex_size = k;
+      mesh.simplices.push_back({cells[i].ids[0], cells[i].ids[1], cells[i].ids[2], cells[i].ids[3]});
+      mesh.simplex_lines.push_back(cells[i].line);
+    } else {
+      mesh.cell_size = c;
+      mesh.cells.push_back(cells[i].ids);
+      mesh.cell_lines.push_back(cells[i].line);
+    }
   }
 }
 
@@ -352,7 +372,7 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh)
     } else if(same_keyword(token.text, "POINT_DATA") || same_keyword(token.text, "CELL_DATA")) {
       in_point_data = same_keyword(token.text, "POINT_DATA");
       const std::string block(token.text);
-      const std::size_t expected = in_point_data ? mesh.map.size() : mesh.simplices.size();
+      const std::size_t expected = in_point_data ? mesh.map.size() : mesh.simplices.size() + mesh.cells.size();
       Token count;
       if(!file.next_token(count))
         file.fail_truncated("expected the " + block + " count");
@@ -445,6 +465,20 @@ inline VTK_fields VTK_point_fields(const std::string& path, const Mesh_file& mes
 
 inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 {
+  if(!mesh.cells.empty()) {
+    const std::size_t c = static_cast<std::size_t>(mesh.cell_size);
+    out << "CELLS " << mesh.cells.size() << ' ' << mesh.cells.size() * (c + 1) << '\n';
+    for(const std::array<std::size_t, 8>& s : mesh.cells) {
+      out << c;
+      for(std::size_t i = 0; i < c; ++i)
+        out << ' ' << s[i];
+      out << '\n';
+    }
+    out << "CELL_TYPES " << mesh.cells.size() << '\n';
+    for(std::size_t i = 0; i < mesh.cells.size(); ++i)
+      out << (c == 8 ? "12\n" : "9\n");
+    return;
+  }
   const std::size_t k = static_cast<std::size_t>(mesh.simplex_size);
   out << "CELLS " << mesh.simplices.size() << ' ' << mesh.simplices.size() * (k + 1) << '\n';
   for(const std::array<std::size_t, 4>& s : mesh.simplices) {

@@ -53,6 +53,23 @@ inline void check_simplices(const std::string& path, const Mesh_file& mesh)
   }
 }
 
+inline void check_cells(const std::string& path, const Mesh_file& mesh)
+{
+  const int k = mesh.cell_size;
+  if(k != 4 && k != 8 && !(k == 0 && mesh.cells.empty()))
+    throw Write_error(path, "cell_size is " + std::to_string(k) + "; expected 4 or 8");
+  if(!mesh.cells.empty() && !mesh.simplices.empty())
+    throw Write_error(path, "the mesh has both simplices and cells; a file holds one element type");
+  if(k == 8 && (mesh.rest_dimension == 2 || mesh.map_dimension == 2))
+    throw Write_error(path, "hexahedra need 3D positions, but a dimension is 2");
+  const std::size_t n = mesh.number_of_vertices();
+  for(std::size_t i = 0; i < mesh.cells.size(); ++i) {
+    std::string defect = simplex_defect(mesh.cells[i], k, n, 0);
+    if(!defect.empty())
+      throw Write_error(path, std::string(cell_name(k)) + " " + std::to_string(i) + ": " + defect);
+  }
+}
+
 inline void check_for_writing(const std::string& path, const Mesh_file& mesh)
 {
   check_geometry(path, mesh.rest, mesh.rest_dimension, "rest");
@@ -61,6 +78,7 @@ inline void check_for_writing(const std::string& path, const Mesh_file& mesh)
     throw Write_error(path, "rest has " + std::to_string(mesh.rest.size()) + " positions but map has "
                                 + std::to_string(mesh.map.size()));
   check_simplices(path, mesh);
+  check_cells(path, mesh);
   for(std::size_t id : mesh.fixed)
     if(id >= mesh.number_of_vertices())
       throw Write_error(path, "fixed vertex id " + std::to_string(id) + " is out of range "
@@ -86,6 +104,14 @@ inline void check_triangles_only(const std::string& path, const Mesh_file& mesh,
 {
   if(mesh.simplex_size == 4)
     throw Write_error(path, std::string(format) + " stores triangles only, not tetrahedra");
+}
+
+// (OFF and OBJ store faces: triangles and quadrilaterals)
+inline void check_faces_only(const std::string& path, const Mesh_file& mesh, const char* format)
+{
+  check_triangles_only(path, mesh, format);
+  if(mesh.cell_size == 8)
+    throw Write_error(path, std::string(format) + " stores faces only, not hexahedra");
 }
 
 } // namespace internal

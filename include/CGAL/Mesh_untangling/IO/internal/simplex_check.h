@@ -17,6 +17,11 @@ inline const char* simplex_name(int simplex_size)
   return simplex_size == 4 ? "tetrahedron" : "triangle";
 }
 
+inline const char* cell_name(int cell_size)
+{
+  return cell_size == 8 ? "hexahedron" : "quadrilateral";
+}
+
 inline std::string index_range(std::size_t number_of_vertices, std::size_t base)
 {
   if(number_of_vertices == 0)
@@ -24,10 +29,11 @@ inline std::string index_range(std::size_t number_of_vertices, std::size_t base)
   return "[" + std::to_string(base) + ", " + std::to_string(number_of_vertices - 1 + base) + "]";
 }
 
-// Why `ids` (in the file's numbering, starting at `base`) cannot be a simplex
+// Why `ids` (in the file's numbering, starting at `base`) cannot be a simplex (or a cell)
 // of a mesh with `n` vertices; empty when it can. Shared by readers and
 // writers so that both sides accept exactly the same meshes.
-inline std::string simplex_defect(const std::array<std::size_t, 4>& ids, int simplex_size,
+template <std::size_t N>
+std::string simplex_defect(const std::array<std::size_t, N>& ids, int simplex_size,
                                   std::size_t n, std::size_t base)
 {
   for(int i = 0; i < simplex_size; ++i)
@@ -40,7 +46,8 @@ inline std::string simplex_defect(const std::array<std::size_t, 4>& ids, int sim
   return std::string();
 }
 
-inline std::array<std::size_t, 4> to_zero_based(std::array<std::size_t, 4> ids, int simplex_size,
+template <std::size_t N>
+std::array<std::size_t, N> to_zero_based(std::array<std::size_t, N> ids, int simplex_size,
                                                 std::size_t base)
 {
   for(int i = 0; i < simplex_size; ++i)
