@@ -122,8 +122,8 @@ void check_pictures(const Arguments& args, const Mesh_file& mesh)
 {
   for(const std::string* path : {&args.svg, &args.svg_input})
     if(!path->empty() && mesh.simplex_size != 3)
-      throw Usage_error(*path + ": SVG pictures are drawn for 2D maps (triangles) only; " + args.input +
-                        " holds tetrahedra (write .vtk and open it in ParaView)");
+      throw Usage_error(*path + ": SVG pictures are drawn for 2D maps (triangles) only; " + args.input + " holds " +
+                        element_kind(mesh) + " (write .vtk and open it in ParaView)");
 }
 
 /// Element `i` as its file numbers it (OBJ and MEDIT count from 1), with
@@ -167,8 +167,8 @@ Mesh_file read_problem(const Arguments& args)
   }
   if(ext == ".obj" && mesh.map_dimension == 0)
     throw Usage_error(args.input + ": no texture coordinates (vt): an OBJ input holds the domain in v and the map in vt");
-  if(mesh.simplex_size == 0)
-    throw Usage_error(args.input + ": no triangle or tetrahedron");
+  if(mesh.simplex_size == 0 && mesh.cell_size == 0)
+    throw Usage_error(args.input + ": no triangle, tetrahedron, quadrilateral or hexahedron");
   if(!args.rest.empty()) {
     Mesh_file rest = IO::read_mesh_file(args.rest);
     const bool rest_in_map = rest.rest.empty();       // OFF, VTK, MEDIT: one geometry
@@ -178,6 +178,9 @@ Mesh_file read_problem(const Arguments& args)
                         std::to_string(mesh.map.size()));
     if(!rest.simplices.empty() && rest.simplices != mesh.simplices)
       throw Usage_error(first_element_difference(args, rest, mesh));
+    if((!rest.cells.empty() || !rest.simplices.empty()) && rest.cells != mesh.cells)
+      throw Usage_error(args.rest + ": its cells are not " + args.input + "'s: the rest must have the input's "
+                        "elements, in the same order");
     mesh.rest = points;
     mesh.rest_dimension = rest_in_map ? rest.map_dimension : rest.rest_dimension;
   }
@@ -213,6 +216,10 @@ void check_output_format(const std::string& output, const Mesh_file& mesh)
   const std::string ext = lowercase_extension(output);
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
     throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .mesh or .input)");
+  if(mesh.cell_size == 8 && (ext == ".obj" || ext == ".off" || ext == ".input"))
+    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk or .mesh)");
+  if(mesh.cell_size == 4 && ext == ".input")
+    throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .mesh, .obj or .off)");
   if(ext == ".input" && mesh.rest.empty())
     throw Usage_error(output + ": the .input format needs rest positions (give --rest)");
 }
@@ -223,6 +230,9 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
   if(args.phantoms.empty()) return;
   if(args.no_phantoms)
     throw Usage_error(args.phantoms + ": --phantoms writes the phantom elements, but --no-phantoms switches them off");
+  if(mesh.cell_size != 0)
+    throw Usage_error(args.phantoms + ": no phantom element protects " + element_kind(mesh) +
+                      " (their corner simplices overlap: fix the boundary)");
   const std::string ext = lowercase_extension(args.phantoms);
   if(!is_mesh_extension(ext) || ext == ".input")
     throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .mesh, .off "
@@ -276,20 +286,21 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["rest"] = args.rest.empty() ? (mesh.rest.empty() ? "regular simplices" : args.input) : args.rest;
   j["output"] = args.output;
   j["fixed"] = fixed_source;
-  j["dimension"] = mesh.simplex_size - 1;
+  j["dimension"] = element_dimension(mesh);
+  j["element_type"] = element_kind(mesh);
   j["vertices"] = r.number_of_vertices;
   j["elements"] = r.number_of_elements;
   j["fixed_vertices"] = r.number_of_fixed_vertices;
   j["degenerate_targets_replaced"] = r.degenerate_targets_replaced;
   j["initial_map"] = args.init == "project" ? "projection on the best-fit plane" : "given";
-  j["phantom_protection"] = !args.no_phantoms;
+  j["phantom_protection"] = !args.no_phantoms && mesh.cell_size == 0;
   j["phantom_elements"] = r.number_of_phantom_elements;
   j["phantom_vertices"] = r.number_of_phantom_vertices;
   j["incomplete_phantom_stars"] = r.incomplete_phantom_stars;
   j["phantom_elements_not_positive_after"] = phantoms_not_positive;
   j["phantoms_output"] = args.phantoms.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.phantoms);
   j["solver"] = r.solver;
-  j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(mesh.simplex_size - 1);
+  j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(element_dimension(mesh));
   j["status"] = MU::to_string(r.status);
   j["locally_invertible"] = v.locally_invertible;
   j["inverted_before"] = r.inverted_before;
@@ -305,9 +316,17 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["overwound_boundary_vertices"] = v.overwound_boundary_vertices;
   j["overwound_interior_edges"] = v.overwound_interior_edges;
   j["overwound_boundary_edges"] = v.overwound_boundary_edges;
+  if(mesh.cell_size != 0) {
+    // Cells are judged per cell, on their corner simplices: stars are not checked.
+    j["stars_checked"] = false;
+    j["inverted_cell_ids"] = v.inverted_cell_ids;
+    j["min_scaled_jacobian_before"] = c.before.min_scaled_jacobian;
+    j["min_scaled_jacobian_after"] = v.min_scaled_jacobian;
+  }
   j["min_covering"] = v.min_covering;
   j["max_covering"] = v.max_covering;
   j["max_boundary_covering"] = v.max_boundary_covering;
+  j["boundary_checked"] = c.boundary_after.checked;
   j["boundary_facets"] = c.boundary_after.boundary_facets;
   j["boundary_self_intersections_before"] = c.boundary_before.intersecting_pairs;
   j["boundary_self_intersections_after"] = c.boundary_after.intersecting_pairs;
@@ -561,9 +580,17 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.vertices_added);
     if(r.input_returned)
       std::fprintf(stderr, "the run ended with more defects than its input: the input map is written unchanged\n");
-    std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
-                 mesh.simplex_size == 3 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
-                 run.checks.boundary_after.intersecting_pairs);
+    if(mesh.cell_size != 0)
+      std::fprintf(stderr, "%s: inverted cells %zu -> %zu, min scaled Jacobian %.4g -> %.4g (vertex stars not "
+                   "checked: the corner simplices of cells overlap)\n", element_kind(mesh),
+                   run.checks.before.inverted_cell_ids.size(), verdict.inverted_cell_ids.size(),
+                   run.checks.before.min_scaled_jacobian, verdict.min_scaled_jacobian);
+    if(run.checks.boundary_after.checked)
+      std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
+                   element_dimension(mesh) == 2 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,
+                   run.checks.boundary_after.intersecting_pairs);
+    else
+      std::fprintf(stderr, "boundary self-intersections: not checked for %s\n", element_kind(mesh));
   }
   // Said even with --quiet: the targets are not all the ones given.
   if(run.result.degenerate_targets_replaced > 0)
@@ -582,6 +609,8 @@ int run(const Arguments& args)
     throw Usage_error("--fixed and --fix-boundary exclude each other");
 
   Mesh_file mesh = read_problem(args);
+  if(args.refine && mesh.cell_size != 0)
+    throw Usage_error("--refine splits the edges of simplices; " + args.input + " holds " + element_kind(mesh));
   check_output_paths(args);
   Run run;
   run.fixed = fixed_vertices(args, mesh, run.fixed_source);
@@ -643,10 +672,12 @@ const CLI::Validator fraction_from_0_to_1(
 int main(int argc, char** argv)
 {
   Arguments args;
-  CLI::App app{"Untangles a 2D triangle map or a tetrahedral mesh until it is locally invertible.\n"
+  CLI::App app{"Untangles a 2D triangle or quadrilateral map, or a tetrahedral or hexahedral mesh, until it is "
+               "locally invertible (cells: every corner simplex positive).\n"
                "Exit code: 0 locally invertible, 1 not (result written anyway), 2 bad usage or input, 3 inverted "
                "elements whose vertices are all fixed are left (nothing can repair them; result written)."};
-  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .input")
+  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .input; "
+                 "triangles, tetrahedra, quadrilaterals (.obj .off .vtk .mesh) or hexahedra (.vtk .mesh)")
     ->required();
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
   auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based; empty: none); default: "

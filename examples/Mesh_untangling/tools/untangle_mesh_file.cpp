@@ -3,6 +3,7 @@
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
+#include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/target_orientations.h>
@@ -11,6 +12,7 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <algorithm>
 #include <iterator>
 #include <type_traits>
 
@@ -38,16 +40,33 @@ std::vector<std::array<double, d>> points_of(const std::vector<std::array<double
   return p;
 }
 
+template <int d>
+std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> cells_of(const Mesh_file& mesh)
+{
+  std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> c(mesh.cells.size());
+  for(std::size_t k = 0; k < c.size(); ++k)
+    for(std::size_t i = 0; i < c[k].size(); ++i) c[k][i] = mesh.cells[k][i];
+  return c;
+}
+
+bool has_cells(const Mesh_file& mesh) { return mesh.cell_size != 0; }
+
 void check_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
-  if(mesh.simplex_size != 3 && mesh.simplex_size != 4)
-    throw Invalid_problem("the mesh has neither triangles nor tetrahedra");
+  if(mesh.simplex_size != 3 && mesh.simplex_size != 4 && mesh.cell_size != 4 && mesh.cell_size != 8)
+    throw Invalid_problem("the mesh has no triangles, tetrahedra, quadrilaterals or hexahedra");
   if(mesh.map_dimension == 0 || mesh.map.empty())
     throw Invalid_problem("the file has no map (positions) to untangle");
-  if(mesh.simplex_size == 3)
+  if(mesh.cell_size == 4 && mesh.rest_dimension == 3)
+    throw Invalid_problem("quadrilaterals are untangled in the plane against planar rest quadrilaterals, but the "
+                          "rest is 3D");
+  if(mesh.cell_size == 8 && mesh.rest_dimension == 2)
+    throw Invalid_problem("hexahedra need 3D rest positions");
+  if(mesh.simplex_size == 3 || mesh.cell_size == 4)
     for(std::size_t v = 0; v < mesh.map.size(); ++v)
       if(mesh.map[v][2] != 0)
-        throw Invalid_problem("a triangle mesh is untangled in the plane, but vertex " + std::to_string(v) +
+        throw Invalid_problem(std::string("a ") + (mesh.cell_size == 4 ? "quadrilateral" : "triangle") +
+                              " mesh is untangled in the plane, but vertex " + std::to_string(v) +
                               " of the map has z = " + std::to_string(mesh.map[v][2]));
   if(mesh.simplex_size == 4 && mesh.rest_dimension == 2)
     throw Invalid_problem("tetrahedra need 3D rest positions");
@@ -171,6 +190,61 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   return result;
 }
 
+/// Quadrilaterals (d = 2) and hexahedra (d = 3) through the package's entry for cells.
+template <int d>
+Untangling_result untangle_cells(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
+                                 Run_record* record)
+{
+  std::vector<Point<d>> points = cgal_points<d>(mesh.map);
+  const auto cells = cells_of<d>(mesh);
+  const auto fixed = boost::make_function_property_map<std::size_t, bool>(
+    [&is_fixed](std::size_t v) { return !is_fixed.empty() && is_fixed[v]; });
+  std::function<bool(const MU::Untangling_step&)> callback;
+  if(options.progress) callback = [&options](const MU::Untangling_step& s) { options.progress(s); return true; };
+  std::vector<MU::Element_figures> figures;
+  const auto run = [&](const auto& rest) {
+    const auto np = rest.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
+                        .maximum_running_time(options.max_seconds).callback(callback);
+    const auto package_np = MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(d),
+                              MU::parameters::solver(options.solver,
+                              MU::parameters::continuation(options.continuation,
+                              MU::parameters::continuation_steps(options.continuation_steps,
+                              MU::parameters::progress_callback(options.progress_fraction, np)))));
+    if(!record) return CGAL::untangle_cell_soup(points, cells, package_np);
+    return CGAL::untangle_cell_soup(points, cells,
+                                    MU::parameters::element_figures_output(std::back_inserter(figures), package_np));
+  };
+  const Untangling_result result = mesh.rest.empty()
+    ? run(CGAL::parameters::default_values())
+    : run(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
+  if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(int c = 0; c < d; ++c) mesh.map[v][c] = points[v][c];
+  if(record) {
+    *record = Run_record();
+    record->dimension = d;
+    record->element_figures = std::move(figures);
+  }
+  return result;
+}
+
+/// The orientation every corner simplex of the cells must have: that of its
+/// rest corner (as the run takes it), +1 for unit targets.
+template <int d>
+std::vector<int> corner_orientations(const Mesh_file& mesh)
+{
+  const auto corners = MU::corner_simplex_indices<d>(cells_of<d>(mesh), mesh.map.size());
+  if(mesh.rest.empty()) return std::vector<int>(corners.size(), 1);
+  return MU::target_orientations(cgal_points<d>(mesh.map), corners,
+                                 MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
+}
+
+template <int d>
+MU::Invertibility_report check_cells_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+{
+  return MU::check_cells<d>(points_of<d>(mesh.map), cells_of<d>(mesh), corner_orientations<d>(mesh), is_fixed);
+}
+
 Verdict verdict_of(const MU::Invertibility_report& report)
 {
   Verdict v;
@@ -195,6 +269,16 @@ Verdict verdict_of(const MU::Invertibility_report& report)
 template <int d>
 Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
+  if(has_cells(mesh)) {
+    const MU::Invertibility_report report = check_cells_of<d>(mesh, is_fixed);
+    Verdict v = verdict_of(report);
+    std::set_union(report.inverted_element_ids.begin(), report.inverted_element_ids.end(),
+                   report.input_defect_element_ids.begin(), report.input_defect_element_ids.end(),
+                   std::back_inserter(v.inverted_cell_ids));
+    for(double j : MU::scaled_jacobians<d>(points_of<d>(mesh.map), cells_of<d>(mesh)))
+      v.min_scaled_jacobian = std::min(v.min_scaled_jacobian, j);
+    return v;
+  }
   return verdict_of(MU::check_local_invertibility<d>(points_of<d>(mesh.map), simplices_of<d>(mesh),
                                                      reference_orientations(mesh), is_fixed));
 }
@@ -235,9 +319,41 @@ void add_distortions(const Run_record& record, std::size_t elements, MU::IO::VTK
   cells.push_back({"volume_distortion", std::move(volume)});
 }
 
+/// The fields of cells: per cell the smallest det J and the largest
+/// distortions of its corners, `inverted` and `input_defect` (exact, as the
+/// verdict) and `scaled_jacobian`; per point `fixed`.
+template <int d>
+Map_fields measure_cells(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
+{
+  const std::size_t m = mesh.cells.size(), K = d == 2 ? 4 : 8, n = mesh.map.size();
+  const MU::Invertibility_report report = check_cells_of<d>(mesh, is_fixed);
+  Map_fields f;
+  f.verdict = check<d>(mesh, is_fixed);
+  std::vector<double> det(m), shape(m, 0.), volume(m, 0.);
+  for(std::size_t c = 0; c < m; ++c) {
+    det[c] = record.element_figures[K * c].det_J;
+    for(std::size_t i = 0; i < K; ++i) {
+      const MU::Element_figures& e = record.element_figures[K * c + i];
+      det[c] = std::min(det[c], e.det_J);
+      shape[c] = std::max(shape[c], e.shape_distortion);
+      volume[c] = std::max(volume[c], e.volume_distortion);
+    }
+  }
+  f.cells.push_back({"det_J", std::move(det)});
+  f.cells.push_back({"shape_distortion", std::move(shape)});
+  f.cells.push_back({"volume_distortion", std::move(volume)});
+  f.cells.push_back(flags("inverted", m, report.inverted_element_ids));
+  f.cells.push_back(flags("input_defect", m, report.input_defect_element_ids));
+  f.cells.push_back({"scaled_jacobian", MU::scaled_jacobians<d>(points_of<d>(mesh.map), cells_of<d>(mesh))});
+  f.points.push_back({"fixed", std::vector<double>(n, 0.), true});
+  for(std::size_t v = 0; v < is_fixed.size(); ++v) f.points.back().values[v] = is_fixed[v];
+  return f;
+}
+
 template <int d>
 Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
 {
+  if(has_cells(mesh)) return measure_cells<d>(mesh, is_fixed, record);
   const auto points = points_of<d>(mesh.map);
   const auto simplices = simplices_of<d>(mesh);
   const std::vector<int> orientation = reference_orientations(mesh);
@@ -264,14 +380,32 @@ Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, con
 
 void check_record(const Mesh_file& mesh, const Run_record& record)
 {
-  const std::size_t elements = mesh.simplices.size() + record.phantom_simplices.size();
-  if(record.dimension != mesh.simplex_size - 1 || record.element_figures.size() != elements)
+  const std::size_t elements = mesh.simplices.size() + mesh.cells.size() * std::size_t(mesh.cell_size) +
+                               record.phantom_simplices.size();
+  if(record.dimension != element_dimension(mesh) || record.element_figures.size() != elements)
     throw Invalid_problem("the run record does not belong to this mesh (" + std::to_string(elements) + " elements)");
 }
 
 template <int d>
 Boundary_verdict check_boundary(const Mesh_file& mesh)
 {
+  if(mesh.cell_size == 8) {
+    Boundary_verdict not_checked;
+    not_checked.checked = false;
+    return not_checked;
+  }
+  if(mesh.cell_size == 4) {
+    // the quadrilaterals split along a diagonal have their boundary
+    Mesh_file halves = mesh;
+    halves.cells.clear();
+    halves.cell_size = 0;
+    halves.simplex_size = 3;
+    for(const auto& q : mesh.cells) {
+      halves.simplices.push_back({q[0], q[1], q[2], 0});
+      halves.simplices.push_back({q[0], q[2], q[3], 0});
+    }
+    return check_boundary<2>(halves);
+  }
   // Only the counts are reported: list no pair.
   const auto report = MU::check_boundary_self_intersections<d>(points_of<d>(mesh.map), simplices_of<d>(mesh), 0);
   Boundary_verdict v;
@@ -287,6 +421,9 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
                                      Run_record* record)
 {
   check_shape(mesh, is_fixed);
+  if(has_cells(mesh))
+    return mesh.cell_size == 4 ? untangle_cells<2>(mesh, is_fixed, options, record)
+                               : untangle_cells<3>(mesh, is_fixed, options, record);
   return mesh.simplex_size == 3 ? untangle<2>(mesh, is_fixed, options, record)
                                 : untangle<3>(mesh, is_fixed, options, record);
 }
@@ -295,13 +432,14 @@ Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed,
 {
   check_shape(mesh, is_fixed);
   check_record(mesh, record);
-  return mesh.simplex_size == 3 ? measure<2>(mesh, is_fixed, record) : measure<3>(mesh, is_fixed, record);
+  return element_dimension(mesh) == 2 ? measure<2>(mesh, is_fixed, record) : measure<3>(mesh, is_fixed, record);
 }
 
 Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record)
 {
   check_shape(mesh, {});
   check_record(mesh, record);
+  if(has_cells(mesh)) throw Invalid_problem("no phantom element protects quadrilaterals or hexahedra");
   Phantom_mesh p;
   p.mesh.simplex_size = mesh.simplex_size;
   p.mesh.simplices = record.phantom_simplices;
@@ -335,19 +473,19 @@ void project_surface_on_best_fit_plane(Mesh_file& mesh)
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
   check_shape(mesh, is_fixed);
-  return mesh.simplex_size == 3 ? check<2>(mesh, is_fixed) : check<3>(mesh, is_fixed);
+  return element_dimension(mesh) == 2 ? check<2>(mesh, is_fixed) : check<3>(mesh, is_fixed);
 }
 
 Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh)
 {
   check_shape(mesh, {});
-  return mesh.simplex_size == 3 ? check_boundary<2>(mesh) : check_boundary<3>(mesh);
+  return element_dimension(mesh) == 2 ? check_boundary<2>(mesh) : check_boundary<3>(mesh);
 }
 
 Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
   check_shape(mesh, is_fixed);
-  if(mesh.simplex_size != 3) throw Invalid_problem("only 2D maps (triangles) can be drawn");
+  if(mesh.simplex_size != 3) throw Invalid_problem("only 2D maps of triangles can be drawn");
   Svg_map map;
   map.positions = points_of<2>(mesh.map);
   map.triangles = simplices_of<2>(mesh);
@@ -382,16 +520,36 @@ std::vector<int> reference_orientations(const Mesh_file& mesh)
     const auto simplices = simplices_of<d>(mesh);
     return with_rest_points<d>(mesh, [&](const auto& rest) { return MU::target_orientations(points, simplices, rest); });
   };
+  if(has_cells(mesh)) return mesh.cell_size == 4 ? corner_orientations<2>(mesh) : corner_orientations<3>(mesh);
   return mesh.simplex_size == 3 ? orientations(std::integral_constant<int, 2>())
                                 : orientations(std::integral_constant<int, 3>());
 }
 
 std::vector<bool> boundary_vertices(const Mesh_file& mesh)
 {
+  if(has_cells(mesh)) {
+    const std::vector<char> b = mesh.cell_size == 4
+      ? MU::internal::cell_boundary_vertices<2>(mesh.map.size(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.map.size()),
+                                                std::size_t(-1), 4)
+      : MU::internal::cell_boundary_vertices<3>(mesh.map.size(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.map.size()),
+                                                std::size_t(-1), 8);
+    return std::vector<bool>(b.begin(), b.end());
+  }
   const std::vector<char> b = mesh.simplex_size == 3
     ? MU::internal::boundary_vertices<2>(mesh.map.size(), simplices_of<2>(mesh))
     : MU::internal::boundary_vertices<3>(mesh.map.size(), simplices_of<3>(mesh));
   return std::vector<bool>(b.begin(), b.end());
+}
+
+int element_dimension(const Mesh_file& mesh)
+{
+  return mesh.cell_size != 0 ? (mesh.cell_size == 4 ? 2 : 3) : mesh.simplex_size - 1;
+}
+
+const char* element_kind(const Mesh_file& mesh)
+{
+  return mesh.cell_size == 4 ? "quadrilaterals" : mesh.cell_size == 8 ? "hexahedra"
+       : mesh.simplex_size == 4 ? "tetrahedra" : "triangles";
 }
 
 } // namespace Mesh_untangling_tools

@@ -74,6 +74,10 @@ struct Run_record
 /// with targets from `mesh.rest` (3D rest triangles are laid flat
 /// isometrically); tetrahedra untangle a 3D map with targets from the rest
 /// positions.  Without rest geometry every target is a regular simplex.
+/// Quadrilaterals (a planar map, 2D rest) and hexahedra go through
+/// CGAL::untangle_cell_soup: targets the rest cells, or unit squares/cubes;
+/// no phantom, no refinement; the record's element figures are per corner
+/// simplex (K c + i).
 /// `record`, when given, receives the phantoms the run used and the figures of every element.
 /// With `options.refinement`, a refined result grows `mesh` (Untangling_result::vertices_added
 /// new vertices, free, after the others; their rest at the midpoint of their parents'; split
@@ -99,7 +103,7 @@ struct Verdict
   std::size_t input_defects = 0;        ///< inverted elements whose vertices are all fixed
   std::size_t input_defect_stars = 0;   ///< over-wound stars and edge fans of such elements only
   std::size_t non_manifold = 0;
-  bool locally_invertible = false;      ///< no defect at all, input defects included
+  bool locally_invertible = false;      ///< no defect at all, input defects included (cells: every corner positive)
   /// every defect that a free vertex could repair is gone (input defects may be left)
   bool no_repairable_defect = false;
   // The same counts apart, and the windings (see Invertibility_report).
@@ -108,6 +112,9 @@ struct Verdict
   std::size_t overwound_interior_edges = 0;
   std::size_t overwound_boundary_edges = 0;
   double min_covering = 1, max_covering = 1, max_boundary_covering = 0;
+  // Quadrilaterals and hexahedra only (stars are not checked there):
+  std::vector<std::size_t> inverted_cell_ids;   ///< cells with a non-positive corner, input defects included
+  double min_scaled_jacobian = 1;               ///< over the cells (Mesh_untangling::scaled_jacobian())
 };
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
@@ -143,6 +150,7 @@ Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record);
 /// itself: the global-invertibility check of global_invertibility.h.
 struct Boundary_verdict
 {
+  bool checked = true;   ///< false for hexahedra: their boundary is not checked
   std::size_t boundary_facets = 0;
   std::size_t intersecting_pairs = 0;
   std::size_t degenerate_facets = 0;
@@ -158,11 +166,18 @@ Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 void add_phantom_overlay(Svg_map& map, const Run_record& record);
 
 /// Orientation each element must have: that of its rest simplex (triangles
-/// with 3D rest are always +1); +1 without rest.
+/// with 3D rest are always +1); +1 without rest.  For cells, per corner
+/// simplex (Mesh_untangling::corner_simplex_indices()).
 std::vector<int> reference_orientations(const Mesh_file& mesh);
 
-/// Vertices on the boundary (facets with one element).
+/// Vertices on the boundary (facets with one element; for cells, cell facets with one cell).
 std::vector<bool> boundary_vertices(const Mesh_file& mesh);
+
+/// The dimension of the mesh's elements: 2 (triangles, quadrilaterals) or 3.
+int element_dimension(const Mesh_file& mesh);
+
+/// What the mesh is made of, in words: "triangles", "tetrahedra", "quadrilaterals", "hexahedra".
+const char* element_kind(const Mesh_file& mesh);
 
 } // namespace Mesh_untangling_tools
 

@@ -88,6 +88,8 @@ inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
 {
   if(a.simplex_size != b.simplex_size) mismatch("the simplex size");
   if(!same_bits(a.simplices, b.simplices)) mismatch("the simplices");
+  if(a.cell_size != b.cell_size) mismatch("the cell size");
+  if(!same_bits(a.cells, b.cells)) mismatch("the cells");
   if(a.rest_dimension != b.rest_dimension) mismatch("the rest dimension");
   if(!same_bits(a.rest, b.rest)) mismatch("the rest positions");
   if(a.map_dimension != b.map_dimension) mismatch("the map dimension");
