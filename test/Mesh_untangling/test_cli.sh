@@ -554,8 +554,8 @@ sed 's/^vt 0.25 0$/vt nan 0/' s4.obj > nan.obj
 fails obj_nan 'nan\.obj:27: .*texture coordinate 2 is not finite' nan.obj
 sed '0,/^f /s/^f [0-9]*/f 999/' s4.obj > range.obj
 fails obj_index_out_of_range 'range\.obj:51: face 1: vertex index 999 is out of range' range.obj
-printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n' > quad.obj
-fails obj_quad 'quad\.obj:9: face with 4 vertices; only triangles' quad.obj
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\nf 1/1 2/2 3/3\n' > quad.obj
+fails obj_mixed_faces 'quad\.obj:10: mixed cell kinds: a triangle face, but the first face \(line 9\) is a quadrilateral' quad.obj
 # OFF
 head -n 10 s4.off > trunc.off
 fails off_truncated 'trunc\.off:10: truncated' trunc.off
@@ -563,8 +563,8 @@ sed '4s/.*/nan 0 0/' s4.off > nan.off
 fails off_nan 'nan\.off:4: .*vertex 1 is not finite' nan.off
 sed '30s/^3 [0-9]*/3 99/' s4.off > range.off
 fails off_index_out_of_range 'range\.off:30: face 2: vertex index 99 is out of range' range.off
-printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > quad.off
-fails off_quad 'quad\.off:7: face 0 has 4 vertices; only triangles' quad.off
+printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n5 0 1 2 3 4\n' > pentagon.off
+fails off_pentagon 'pentagon\.off:8: face 0 has 5 vertices; only triangles \(3\) and quadrilaterals \(4\)' pentagon.off
 sed '5s/.*/0.5 0 0.1/' s4.off > z.off
 fails off_map_not_planar 'z\.off: .*vertex 2 of the map has z = 0\.1' z.off
 # VTK
@@ -828,6 +828,71 @@ run huge huge.vtk --rest huge-rest.vtk -o huge-out.vtk --report huge.json -q
 check "scaled by 1e150: exit 0" rc_is huge 0
 check "scaled by 1e150: no false covering" json_is huge.json overwound_vertices 0
 cd .. || exit 1
+
+#
+# Quadrilaterals and hexahedra (issue 25): untangled through untangle_cell_soup,
+# every corner simplex positive, fixed vertices bitwise in place.
+#
+mkdir cells && cd cells || exit 1
+# fixed_rows FILE.vtk: the POINTS rows of the vertices flagged fixed, as written
+fixed_rows() {
+  paste -d ' ' <(awk '$1 == "POINTS" { n = $2; on = 1; next } on && n > 0 { print; --n }' "$1") \
+               <(vtk_field "$1" fixed) | awk '$4 == 1 { print $1, $2, $3 }'
+}
+json_sign() { python3 -c 'import json, sys; v = json.load(open(sys.argv[1]))[sys.argv[2]]; sys.exit(not (v > 0 if sys.argv[3] == "+" else v < 0))' "$@"; }
+"$MAKE" hexcube 6 0.9 3 hex.vtk > hex.make || echo "FAIL: make_tangled_mesh hexcube" >&2
+check "make_tangled_mesh hexcube: 216 hexahedra" grep -q '343 vertices, 216 hexahedra, 218 fixed' hex.make
+run hex hex.vtk --rest hex-rest.vtk -o hex-out.vtk --report hex.json
+check "hexcube: exit 0" rc_is hex 0
+check "hexcube: inverted cells before" json_positive hex.json inverted_before
+check "hexcube: no inverted cell after" json_is hex.json inverted_after 0
+check "hexcube: no inverted cell id" json_is hex.json inverted_cell_ids '[]'
+check "hexcube: element type" json_is hex.json element_type '"hexahedra"'
+check "hexcube: 216 elements (cells)" json_is hex.json elements 216
+check "hexcube: stars not checked, said so" json_is hex.json stars_checked false
+check "hexcube: boundary not checked, said so" json_is hex.json boundary_checked false
+if [ "$have_python" = 1 ]; then
+  check "hexcube: min scaled Jacobian before < 0" json_sign hex.json min_scaled_jacobian_before -
+  check "hexcube: min scaled Jacobian after > 0" json_sign hex.json min_scaled_jacobian_after +
+fi
+check "hexcube: summary line counts cells" err_has hex 'hexahedra: inverted cells [1-9][0-9]* -> 0, min scaled Jacobian'
+check "hexcube: per-cell fields" vtk_fields_sized hex-out.vtk 216 inverted input_defect scaled_jacobian det_J
+check "hexcube: no cell flagged inverted" [ "$(vtk_sum hex-out.vtk inverted)" = 0 ]
+check "hexcube: every scaled Jacobian > 0" [ "$(vtk_field hex-out.vtk scaled_jacobian | awk '$1 <= 0' | wc -l)" = 0 ]
+check "hexcube: hexahedra written (type 12)" [ "$(grep -cx 12 hex-out.vtk)" -ge 216 ]
+check "hexcube: fixed vertices bitwise in place" [ "$(fixed_rows hex.vtk)" = "$(fixed_rows hex-out.vtk)" ]
+check "hexcube: 218 fixed rows compared" [ "$(fixed_rows hex.vtk | wc -l)" = 218 ]
+run hex_mesh hex-out.vtk -o hex-out.mesh --rest hex-rest.vtk -q
+check "hexcube result read back, written as MEDIT: exit 0" rc_is hex_mesh 0
+check "hexcube MEDIT: Hexahedra block" grep -qx Hexahedra hex-out.mesh
+# Quadrilaterals through .obj (domain v, map vt) and .off.
+"$MAKE" quadsquare 12 0.9 4 quad.obj > /dev/null || echo "FAIL: make_tangled_mesh quadsquare" >&2
+run quad quad.obj --fixed quad-fixed.txt -o quad-out.obj --report quad.json
+check "quadsquare .obj: exit 0" rc_is quad 0
+check "quadsquare .obj: inverted cells before" json_positive quad.json inverted_before
+check "quadsquare .obj: no inverted cell after" json_is quad.json inverted_after 0
+check "quadsquare .obj: 144 quadrilaterals" json_is quad.json elements 144
+check "quadsquare .obj: element type" json_is quad.json element_type '"quadrilaterals"'
+check "quadsquare .obj: boundary checked" json_is quad.json boundary_self_intersections_after 0
+check "quadsquare .obj: faces of 4 corners written" [ "$(grep -c '^f [0-9/]* [0-9/]* [0-9/]* [0-9/]*$' quad-out.obj)" = 144 ]
+fixed_vt() { awk 'NR == FNR { fixed[$1 + 1] = 1; next } /^vt/ { ++v; if(v in fixed) print v, $0 }' quad-fixed.txt "$1"; }
+check "quadsquare .obj: fixed vt rows bitwise in place" [ "$(fixed_vt quad.obj)" = "$(fixed_vt quad-out.obj)" ]
+check "quadsquare .obj: 48 fixed vt rows compared" [ "$(fixed_vt quad.obj | wc -l)" = 48 ]
+"$MAKE" quadsquare 12 0.9 4 quad.off > /dev/null
+run quad_off quad.off --fixed quad-fixed.txt --rest quad-rest.off -o quad-out.vtk -q
+check "quadsquare .off: exit 0" rc_is quad_off 0
+check "quadsquare .off: quadrilaterals in the .vtk (type 9)" [ "$(grep -cx 9 quad-out.vtk)" -ge 144 ]
+run quad_fix quad.off --fix-boundary -o quad-fix.vtk --report quad_fix.json -q
+check "quadsquare --fix-boundary: 48 fixed (the grid's boundary)" json_is quad_fix.json fixed_vertices 48
+check "quadsquare --fix-boundary: exit 0" rc_is quad_fix 0
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n3 0 1 2\n' > mixed.off
+mkdir bad && cd bad || exit 1
+fails off_mixed_cells 'mixed\.off:8: mixed cell kinds: face 1 is a triangle but face 0 \(line 7\) is a quadrilateral' ../mixed.off
+fails hex_phantoms 'no phantom element protects hexahedra' ../hex.vtk --phantoms p.vtk
+fails hex_refine '--refine splits the edges of simplices' ../hex.vtk --refine
+fails hex_as_off 'hexahedra cannot be written as \.off' ../hex.vtk -o h.off
+fails quad_svg 'SVG pictures are drawn for 2D maps \(triangles\) only; \.\./quad\.off holds quadrilaterals' ../quad.off --svg q.svg
+cd ../.. || exit 1
 
 # Real data (../shared/data), when present.
 #
