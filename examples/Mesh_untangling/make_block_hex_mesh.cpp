@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// make_block_hex_mesh BLOCK_DIR N OUTPUT.vtk
+// make_block_hex_mesh [--pad [T]] BLOCK_DIR N OUTPUT.vtk
 // A hexahedral mesh of a CuboidBlocks object (issue 25): the voxel grid of
 // the cuboid that BLOCK_DIR/parameter.vtk maps the object onto (N cells
 // along its longest side), pulled back into the object through the
@@ -14,6 +14,17 @@
 // on the cuboid's faces) fixed.  Writes OUTPUT.vtk (the map and the point
 // scalar `fixed`) and, beside it, OUTPUT-rest.vtk (the voxel grid: the rest
 // cells), and prints the untangle_mesh command.
+//
+// --pad: the boundary layer of that grid has hexahedra with 4 to 7 fixed
+// vertices on the curved surface, some of which no free position can make
+// positive.  A padding (pillow) layer, as hexahedral meshers insert, gives
+// every cell free vertices: the grid shrinks by T cells on every side (at
+// most a quarter of a side; in the cuboid, then pulled back), all its
+// vertices free, and each boundary face of the grid is joined to its twin on
+// the cuboid's face (fixed, pulled back onto the surface) by one hexahedron.
+// Every cell of the padding layer then has exactly one fixed face, and no
+// corner is fixed whole.  The grid's boundary vertices start along the mean
+// inward normal of the surface around their twins (see below).
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
@@ -117,31 +128,60 @@ struct Locator
   }
 };
 
+/// The hexahedron of the quadrilateral `a b c d` (a face of the grid's
+/// boundary, in either orientation) and its twin `A B C D` on the boundary,
+/// ordered so that its corners are positive in `rest`: VTK's order wants the
+/// bottom face counter-clockwise seen from the top.
+std::array<std::size_t, 8> pillow(const std::vector<Point>& rest, std::array<std::size_t, 4> q, std::array<std::size_t, 4> t)
+{
+  const auto corner = [&](const std::array<std::size_t, 4>& b, const std::array<std::size_t, 4>& top) {
+    return det3(minus(rest[b[1]], rest[b[0]]), minus(rest[b[3]], rest[b[0]]), minus(rest[top[0]], rest[b[0]]));
+  };
+  if(corner(q, t) < 0) { std::swap(q[1], q[3]); std::swap(t[1], t[3]); }
+  return {q[0], q[1], q[2], q[3], t[0], t[1], t[2], t[3]};
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  const std::string usage = "usage: make_block_hex_mesh BLOCK_DIR N OUTPUT.vtk\n"
-                            "  BLOCK_DIR holds object.vtk and parameter.vtk (CuboidBlocks); N in [1, 200] cells along "
-                            "the cuboid's longest side\n";
-  if(argc != 4) { std::cerr << usage; return 2; }
+  const std::string usage =
+    "usage: make_block_hex_mesh [--pad [T]] BLOCK_DIR N OUTPUT.vtk\n"
+    "  BLOCK_DIR holds object.vtk and parameter.vtk (CuboidBlocks); N in [1, 200] cells along "
+    "the cuboid's longest side\n"
+    "  --pad [T]: a padding (pillow) layer of hexahedra, T grid cells thick (default 0.5, in (0, 1]; at most a\n"
+    "             quarter of a side), between the\n"
+    "             fixed boundary and the grid, whose vertices all become free\n";
+  std::vector<std::string> args(argv + 1, argv + argc);
+  double pad = 0;
+  if(!args.empty() && args[0] == "--pad") {
+    pad = 0.5;
+    args.erase(args.begin());
+    if(args.size() == 4) {
+      char* end = nullptr;
+      pad = std::strtod(args[0].c_str(), &end);
+      if(*end != 0 || !(pad > 0 && pad <= 1)) { std::cerr << usage; return 2; }
+      args.erase(args.begin());
+    }
+  }
+  if(args.size() != 3) { std::cerr << usage; return 2; }
   char* end = nullptr;
-  const long n = std::strtol(argv[2], &end, 10);
-  const std::string output = argv[3];
+  const long n = std::strtol(args[1].c_str(), &end, 10);
+  const std::string output = args[2];
   if(*end != 0 || n < 1 || n > 200 || IO::internal::lowercase_extension(output) != ".vtk") {
     std::cerr << usage;
     return 2;
   }
   IO::Mesh_file object, parameter;
   try {
-    object = IO::read_VTK((std::filesystem::path(argv[1]) / "object.vtk").string());
-    parameter = IO::read_VTK((std::filesystem::path(argv[1]) / "parameter.vtk").string());
+    object = IO::read_VTK((std::filesystem::path(args[0]) / "object.vtk").string());
+    parameter = IO::read_VTK((std::filesystem::path(args[0]) / "parameter.vtk").string());
   } catch(const IO::Read_error& e) {
     std::cerr << "make_block_hex_mesh: error: " << e.what() << "\n";
     return 2;
   }
   if(object.simplex_size != 4 || parameter.simplices != object.simplices || parameter.map.size() != object.map.size()) {
-    std::cerr << "make_block_hex_mesh: error: " << argv[1] << ": object.vtk and parameter.vtk must hold the same "
+    std::cerr << "make_block_hex_mesh: error: " << args[0] << ": object.vtk and parameter.vtk must hold the same "
               << "tetrahedra\n";
     return 2;
   }
@@ -159,27 +199,109 @@ int main(int argc, char** argv)
   hexes.has_fixed = true;
   std::size_t folded_vertices = 0;
   const auto id = [&](std::size_t i, std::size_t j, std::size_t k) { return (k * (cells[1] + 1) + j) * (cells[0] + 1) + i; };
-  for(std::size_t k = 0; k <= cells[2]; ++k)
-    for(std::size_t j = 0; j <= cells[1]; ++j)
-      for(std::size_t i = 0; i <= cells[0]; ++i) {
-        const std::size_t ijk[3] = {i, j, k};
-        Point p;
-        bool boundary = false;
-        for(int c = 0; c < 3; ++c) {
-          p[c] = ijk[c] == cells[c] ? hi[c] : lo[c] + (hi[c] - lo[c]) * double(ijk[c]) / double(cells[c]);
-          boundary = boundary || ijk[c] == 0 || ijk[c] == cells[c];
+  const auto add = [&](const Point& p, bool fixed) {
+    bool folded = false;
+    hexes.map.push_back(locator.pull_back(p, object.map, folded));
+    folded_vertices += folded;
+    grid.map.push_back(p);
+    if(fixed) hexes.fixed.push_back(hexes.map.size() - 1);
+  };
+  // The grid.  With a padding layer it shrinks by `pad` cells on every side,
+  // its vertices are all free, and each one on the boundary has a fixed twin
+  // on the cuboid's face (`twin`), added after the grid.
+  std::vector<std::size_t> twin((cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1), std::size_t(-1));
+  for(int pass = 0; pass < (pad > 0 ? 2 : 1); ++pass)
+    for(std::size_t k = 0; k <= cells[2]; ++k)
+      for(std::size_t j = 0; j <= cells[1]; ++j)
+        for(std::size_t i = 0; i <= cells[0]; ++i) {
+          const std::size_t ijk[3] = {i, j, k};
+          bool boundary = false;
+          for(int c = 0; c < 3; ++c) boundary = boundary || ijk[c] == 0 || ijk[c] == cells[c];
+          if(pass == 1 && !boundary) continue;
+          Point p;
+          for(int c = 0; c < 3; ++c) {
+            const double h = (hi[c] - lo[c]) / double(cells[c]);
+            // at most a quarter of the side, so that a side of one cell keeps half of it
+            const double shrink = pass == 0 ? std::min(pad, double(cells[c]) / 4) * h : 0;
+            const double from = lo[c] + shrink, to = hi[c] - shrink;
+            p[c] = ijk[c] == cells[c] ? to : from + (to - from) * double(ijk[c]) / double(cells[c]);
+          }
+          if(pass == 1) twin[id(i, j, k)] = hexes.map.size();
+          add(p, boundary && (pad == 0 || pass == 1));
         }
-        bool folded = false;
-        hexes.map.push_back(locator.pull_back(p, object.map, folded));
-        folded_vertices += folded;
-        grid.map.push_back(p);
-        if(boundary) hexes.fixed.push_back(hexes.map.size() - 1);
-      }
   for(std::size_t k = 0; k < cells[2]; ++k)
     for(std::size_t j = 0; j < cells[1]; ++j)
       for(std::size_t i = 0; i < cells[0]; ++i)
         hexes.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
                                id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+  const std::size_t grid_cells = hexes.cells.size();
+  if(pad > 0) {
+    // one hexahedron on every boundary face of the grid: the face and its twin
+    for(int c = 0; c < 3; ++c) {
+      const int a = (c + 1) % 3, b = (c + 2) % 3;
+      for(std::size_t side : {std::size_t(0), cells[c]})
+        for(std::size_t v = 0; v < cells[b]; ++v)
+          for(std::size_t u = 0; u < cells[a]; ++u) {
+            const auto at = [&](std::size_t du, std::size_t dv) {
+              std::size_t ijk[3];
+              ijk[c] = side; ijk[a] = u + du; ijk[b] = v + dv;
+              return id(ijk[0], ijk[1], ijk[2]);
+            };
+            const std::array<std::size_t, 4> q{at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+            hexes.cells.push_back(pillow(grid.map, q, {twin[q[0]], twin[q[1]], twin[q[2]], twin[q[3]]}));
+          }
+    }
+  }
+  std::size_t folded_fans = 0;
+  if(pad > 0) {
+    // Where the free copy of a boundary vertex starts: pillowing's answer, along
+    // the mean inward normal of the fixed quadrilaterals around its twin, as
+    // deep as the layer, when that direction is inside the half-space of every
+    // corner at the twin (each corner tetrahedron has the copy as its only free
+    // vertex).  The pulled-back point need not be: the surface is curved where
+    // the cuboid's face is flat.  When no direction is, no position is: the
+    // fan of fixed quadrilaterals is folded and some corner stays inverted
+    // (counted and reported; the copy keeps its pulled-back start).
+    std::vector<std::vector<Point>> normals(hexes.map.size());
+    std::vector<double> length(hexes.map.size(), 0);
+    const auto norm = [](const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+    // the corners at the twin face, as cell_corners<3>() (corner_simplices.h): the twin, its
+    // two neighbours on the face, the free copy
+    const int top[4][4] = {{4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+    for(std::size_t h = grid_cells; h < hexes.cells.size(); ++h)
+      for(const auto& corner : top) {
+        const auto& cell = hexes.cells[h];
+        const std::size_t t = cell[corner[0]];
+        const Point e = minus(hexes.map[cell[corner[1]]], hexes.map[t]), f = minus(hexes.map[cell[corner[2]]], hexes.map[t]);
+        const Point n{e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+        const double size = norm(n);
+        if(size > 0) normals[t].push_back({n[0] / size, n[1] / size, n[2] / size});
+        length[t] += (norm(e) + norm(f)) / 2;
+      }
+    for(std::size_t v = 0; v < twin.size(); ++v) {
+      const std::size_t t = twin[v];
+      if(t == std::size_t(-1) || normals[t].empty()) continue;
+      Point d{0, 0, 0};
+      for(const Point& n : normals[t])
+        for(int c = 0; c < 3; ++c) d[c] += n[c];
+      // the mean normal, else the perceptron's way into the cone (it finds one
+      // when there is one, and stops when the fan is folded: no way exists)
+      bool inside = false;
+      for(int step = 0; step < 1000 && !inside; ++step) {
+        inside = true;
+        for(const Point& n : normals[t])
+          if(!(n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0)) {
+            for(int c = 0; c < 3; ++c) d[c] += n[c];
+            inside = false;
+            break;
+          }
+      }
+      const double size = norm(d);
+      if(!inside || !(size > 0)) { ++folded_fans; continue; }
+      const double depth = pad * length[t] / double(normals[t].size());
+      for(int c = 0; c < 3; ++c) hexes.map[v][c] = hexes.map[t][c] + depth * d[c] / size;
+    }
+  }
   grid.cells = hexes.cells;
   const std::filesystem::path out(output);
   const std::string rest = (out.parent_path() / (out.stem().string() + "-rest.vtk")).string();
@@ -192,8 +314,12 @@ int main(int argc, char** argv)
     return 2;
   }
   std::cout << output << ": " << hexes.map.size() << " vertices, " << hexes.cells.size() << " hexahedra ("
-            << cells[0] << " x " << cells[1] << " x " << cells[2] << "), " << hexes.fixed.size() << " fixed, "
-            << folded_vertices << " vertices pulled back through inverted tetrahedra\n"
+            << cells[0] << " x " << cells[1] << " x " << cells[2];
+  if(pad > 0) std::cout << " and " << hexes.cells.size() - grid_cells << " in the padding layer";
+  std::cout << "), " << hexes.fixed.size() << " fixed, " << folded_vertices
+            << " vertices pulled back through inverted tetrahedra";
+  if(pad > 0) std::cout << ", " << folded_fans << " boundary vertices whose fixed quadrilaterals are folded";
+  std::cout << "\n"
             << "untangle it with: untangle_mesh " << output << " --rest " << rest << "\n";
   return 0;
 }
