@@ -23,8 +23,7 @@
 // vertices free, and each boundary face of the grid is joined to its twin on
 // the cuboid's face (fixed, pulled back onto the surface) by one hexahedron.
 // Every cell of the padding layer then has exactly one fixed face, and no
-// corner is fixed whole.  The grid's boundary vertices start along the mean
-// inward normal of the surface around their twins (see below).
+// corner is fixed whole.
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
@@ -254,16 +253,16 @@ int main(int argc, char** argv)
   }
   std::size_t folded_fans = 0;
   if(pad > 0) {
-    // Where the free copy of a boundary vertex starts: pillowing's answer, along
-    // the mean inward normal of the fixed quadrilaterals around its twin, as
-    // deep as the layer, when that direction is inside the half-space of every
-    // corner at the twin (each corner tetrahedron has the copy as its only free
-    // vertex).  The pulled-back point need not be: the surface is curved where
-    // the cuboid's face is flat.  When no direction is, no position is: the
-    // fan of fixed quadrilaterals is folded and some corner stays inverted
-    // (counted and reported; the copy keeps its pulled-back start).
+    // Count the boundary vertices whose copy has no position: each corner at
+    // a twin has the copy as its only free vertex, so the copy must lie in
+    // the half-space of every such corner, and when these half-spaces (their
+    // normals those of the fixed quadrilaterals around the twin) share no
+    // direction, the fan of fixed quadrilaterals is folded and some corner
+    // stays inverted whatever the untangling does.  (Starting the copies
+    // along the mean inward normal, as pillowing does, instead of pulled back,
+    // inverted more cells and repaired none more: manual.)
     std::vector<std::vector<Point>> normals(hexes.map.size());
-    std::vector<double> length(hexes.map.size(), 0);
+    std::vector<char> flat(hexes.map.size(), 0);   // a fixed corner triangle of area 0: no position either
     const auto norm = [](const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
     // the corners at the twin face, as cell_corners<3>() (corner_simplices.h): the twin, its
     // two neighbours on the face, the free copy
@@ -276,7 +275,7 @@ int main(int argc, char** argv)
         const Point n{e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
         const double size = norm(n);
         if(size > 0) normals[t].push_back({n[0] / size, n[1] / size, n[2] / size});
-        length[t] += (norm(e) + norm(f)) / 2;
+        else flat[t] = 1;
       }
     for(std::size_t v = 0; v < twin.size(); ++v) {
       const std::size_t t = twin[v];
@@ -284,10 +283,11 @@ int main(int argc, char** argv)
       Point d{0, 0, 0};
       for(const Point& n : normals[t])
         for(int c = 0; c < 3; ++c) d[c] += n[c];
-      // the mean normal, else the perceptron's way into the cone (it finds one
-      // when there is one, and stops when the fan is folded: no way exists)
+      // the mean normal, else the perceptron's way into the cone: it finds one
+      // when there is one; 100000 steps without count as folded (no direction,
+      // or one too narrow to matter)
       bool inside = false;
-      for(int step = 0; step < 1000 && !inside; ++step) {
+      for(int step = 0; step < 100000 && !inside; ++step) {
         inside = true;
         for(const Point& n : normals[t])
           if(!(n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0)) {
@@ -296,10 +296,7 @@ int main(int argc, char** argv)
             break;
           }
       }
-      const double size = norm(d);
-      if(!inside || !(size > 0)) { ++folded_fans; continue; }
-      const double depth = pad * length[t] / double(normals[t].size());
-      for(int c = 0; c < 3; ++c) hexes.map[v][c] = hexes.map[t][c] + depth * d[c] / size;
+      folded_fans += !inside || flat[t];
     }
   }
   grid.cells = hexes.cells;
