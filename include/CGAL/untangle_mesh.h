@@ -389,6 +389,23 @@ untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
     ConcurrencyTag());
 }
 
+namespace Mesh_untangling {
+namespace internal {
+
+/// The point type of the rest given to `untangle_cell_soup()`, or `Point` when none is.
+template <bool given, typename NamedParameters, typename Point>
+struct Rest_point_of { using type = Point; };
+template <typename NamedParameters, typename Point>
+struct Rest_point_of<true, NamedParameters, Point>
+{
+  using Range = std::decay_t<decltype(CGAL::parameters::get_parameter(
+    std::declval<const NamedParameters&>(), internal_np::mesh_untangling_rest_points))>;
+  using type = std::decay_t<decltype(*std::begin(std::declval<const Range&>()))>;
+};
+
+} // namespace internal
+} // namespace Mesh_untangling
+
 /// \ingroup PkgMeshUntanglingRef
 /// Untangles a point/cell soup of quadrilaterals (`Point_2` points, cells of
 /// 4 point indices, counter-clockwise) or hexahedra (`Point_3` points, cells
@@ -421,8 +438,9 @@ untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
 ///     \cgalParamDefault{no point is fixed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_points}
-///     \cgalParamDescription{the rest shape, one point per point: each cell's target is its rest cell}
-///     \cgalParamType{a random access range of points of the map's type}
+///     \cgalParamDescription{the rest shape, one point per point: each cell's target is its rest cell; the rest
+///       of quadrilaterals may be a 3D surface, whose corner triangles are laid flat (a uv map of a quad mesh)}
+///     \cgalParamType{a random access range of points of the map's type, or of `Point_3` for quadrilaterals}
 ///     \cgalParamDefault{unit squares (unit cubes), scaled to the map's area (volume)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback,
@@ -447,14 +465,17 @@ untangle_cell_soup(PointRange& points, const CellRange& cells, const NamedParame
   constexpr int d = Ambient_dimension<Point>::value;
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
-  std::vector<Point> rest;
-  if constexpr(Mesh_untangling::internal::is_given_parameter<NamedParameters,
-                                                            internal_np::mesh_untangling_rest_points_t>()) {
+  constexpr bool has_rest =
+    Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_rest_points_t>();
+  // the rest of quadrilaterals may be a 3D surface: its points are then not the map's
+  using Rest_point = typename Mesh_untangling::internal::Rest_point_of<has_rest, NamedParameters, Point>::type;
+  std::vector<Rest_point> rest;
+  if constexpr(has_rest) {
     const auto& given = get_parameter(np, internal_np::mesh_untangling_rest_points);
     rest.assign(given.begin(), given.end());
   }
   Mesh_untangling::Untangling_result invalid;
-  Mesh_untangling::Corner_simplices<d, Point> corners;
+  decltype(Mesh_untangling::corner_simplices<d>(cells, rest, 0)) corners;
   try {
     corners = Mesh_untangling::corner_simplices<d>(cells, rest, std::size_t(points.size()));
   } catch(const std::invalid_argument& e) {

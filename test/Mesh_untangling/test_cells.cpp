@@ -4,7 +4,8 @@
 // Quadrilateral and hexahedral meshes through the public entry point
 // CGAL::untangle_cell_soup (issue 25, part 2): tangled grids end with every
 // corner simplex positive, fixed vertices bitwise in place; the corner rule,
-// the per-cell verdict, the scaled Jacobian and the errors on bad cells.
+// the per-cell verdict, the scaled Jacobian and the errors on bad cells;
+// quadrilaterals whose rest is a 3D surface (their corners laid flat).
 #include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/corner_simplices.h>
 #include <CGAL/Simple_cartesian.h>
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace MU = CGAL::Mesh_untangling;
@@ -145,6 +147,71 @@ void corner_rule()
         "a cube with its vertex 6 pushed inside: negative scaled Jacobian, one inverted cell");
 }
 
+/// Quadrilaterals whose rest is a 3D surface (a uv map of a quad mesh): each
+/// corner triangle's target is its 3D corner laid flat, with the surface's
+/// edge lengths and a quarter of the quadrilateral's 3D area as weight.
+void surface_corner_rule()
+{
+  using P3 = K::Point_3;
+  const std::vector<std::array<int, 4>> quad{{0, 1, 2, 3}};
+  // a unit square tilted by 45 degrees about the y axis: lengths 1 and sqrt 2
+  const std::vector<P3> tilted{{0, 0, 0}, {1, 0, 1}, {1, 1, 1}, {0, 1, 0}};
+  const auto q = MU::corner_simplices<2>(quad, tilted, 4);
+  static_assert(std::is_same<std::decay_t<decltype(q.targets[0][0])>, K::Point_2>::value,
+                "the targets of a surface's quadrilaterals are planar");
+  bool lengths = true, positive = true;
+  for(std::size_t i = 0; i < 4; ++i) {
+    const auto& s = q.simplices[i];
+    const auto& t = q.targets[i];
+    positive = positive && CGAL::orientation(t[0], t[1], t[2]) == CGAL::POSITIVE;
+    for(int a = 0; a < 3; ++a)
+      for(int b = a + 1; b < 3; ++b)
+        lengths = lengths && std::abs(std::sqrt(CGAL::squared_distance(t[a], t[b])) -
+                                      std::sqrt(CGAL::squared_distance(tilted[s[a]], tilted[s[b]]))) < 1e-15;
+  }
+  check(lengths && positive, "tilted square: every corner target positive, with the 3D edge lengths");
+  check(std::abs(q.weights[0] - std::sqrt(2.) / 4) < 1e-15 && q.weights[0] == q.weights[3],
+        "tilted square: weights a quarter of its 3D area");
+}
+
+/// A tangled uv map of quadrilaterals on a bump (rest 3D), boundary fixed:
+/// untangled, and the run follows the 3D targets (the planar run ends elsewhere).
+void untangles_a_surface_grid()
+{
+  const std::size_t n = 10;
+  Grid<2> g = make_grid<2>(n, 0.9, 11);
+  const double pi = 3.14159265358979323846;
+  std::vector<K::Point_3> surface;
+  for(const K::Point_2& p : g.rest)
+    surface.emplace_back(p.x(), p.y(), 0.4 * std::sin(pi * p.x()) * std::sin(pi * p.y()));
+  const Grid<2> given = g;
+  const auto fixed = boost::make_function_property_map<std::size_t, bool>([&](std::size_t v) { return bool(g.fixed[v]); });
+  const auto np = CGAL::parameters::vertex_is_constrained_map(fixed).maximum_running_time(120.);
+  const MU::Untangling_result r = CGAL::untangle_cell_soup(g.points, g.cells, MU::parameters::rest_points(surface, np));
+  check(r.inverted_before > 0 && r.is_locally_invertible() && r.inverted_after == 0,
+        "quadrilaterals on a bump: " + std::to_string(r.inverted_before) + " inverted, untangled (" +
+          MU::to_string(r.status) + ")");
+  check(MU::check_cells<2>(arrays<2>(g.points), g.cells).inverted_elements == 0,
+        "quadrilaterals on a bump: every corner triangle positive (exact)");
+  bool in_place = true;
+  for(std::size_t v = 0; v < g.points.size(); ++v)
+    if(g.fixed[v] && !(g.points[v] == given.points[v])) in_place = false;
+  check(in_place, "quadrilaterals on a bump: fixed vertices bitwise in place");
+  Grid<2> planar = given;
+  CGAL::untangle_cell_soup(planar.points, planar.cells, MU::parameters::rest_points(planar.rest, np));
+  double moved = 0;
+  for(std::size_t v = 0; v < g.points.size(); ++v)
+    moved = std::max(moved, std::sqrt(CGAL::squared_distance(g.points[v], planar.points[v])));
+  check(moved > 1e-3, "quadrilaterals on a bump: the 3D rest gives another map than the planar one (they differ by " +
+                        std::to_string(moved) + ")");
+  std::vector<K::Point_3> short_rest(surface.begin(), surface.end() - 1);
+  Grid<2> other = given;
+  const MU::Untangling_result bad =
+    CGAL::untangle_cell_soup(other.points, other.cells, MU::parameters::rest_points(short_rest, np));
+  check(bad.status == MU::Untangling_status::INVALID_INPUT && bad.message.find("rest points") != std::string::npos,
+        "quadrilaterals on a bump, one rest point short: invalid input (" + bad.message + ")");
+}
+
 void bad_cells_are_invalid_input()
 {
   std::vector<K::Point_2> points{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -169,6 +236,8 @@ int main()
 {
   corner_rule();
   bad_cells_are_invalid_input();
+  surface_corner_rule();
+  untangles_a_surface_grid();
   untangles_a_grid<2>(12, 0.9, true);
   untangles_a_grid<2>(12, 0.9, false);
   untangles_a_grid<3>(5, 0.7, true);

@@ -7,6 +7,10 @@
 /// Quadrilaterals and hexahedra as their corner simplices: the one rule by
 /// which cells enter the untangling energy and its verdict.
 
+#include <CGAL/Mesh_untangling/internal/flatten_triangle.h>
+
+#include <CGAL/Dimension.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -85,6 +89,14 @@ std::array<Point, (d == 2 ? 4 : 8)> unit_cell()
             Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), Point(0, 1, 1)};
 }
 
+/// The point type of the targets of cells of dimension d whose rest points
+/// are `Rest_point`: the rest's own, or the plane's when the rest of
+/// quadrilaterals is a 3D surface (each corner is laid flat).
+template <int d, typename Rest_point, bool surface = (d == 2 && Ambient_dimension<Rest_point>::value == 3)>
+struct Corner_target_point { using type = Rest_point; };
+template <int d, typename Rest_point>
+struct Corner_target_point<d, Rest_point, true> { using type = typename Kernel_traits<Rest_point>::Kernel::Point_2; };
+
 } // namespace internal
 
 /// \ingroup PkgMeshUntanglingRef
@@ -128,9 +140,14 @@ std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRan
 /// The corner simplices of a soup of quadrilaterals (`d == 2`) or hexahedra
 /// (`d == 3`), with the rest cells' corners as targets, or the unit square's
 /// or cube's when `rest` is empty, and their weights (`Corner_simplices`).
+/// Quadrilaterals may rest on a 3D surface (`Point_3` rest points, the
+/// quad-dominant remeshing case): each corner triangle's target is then its
+/// own 3D corner triangle laid flat, as a triangle of a surface's uv map
+/// gets, so that the quadrilateral's area and angles are the surface's.
 ///
 /// \tparam d 2 or 3
-/// \tparam Point `Point_2` (d = 2) or `Point_3` (d = 3), constructible from its coordinates
+/// \tparam Rest_point `Point_2` or `Point_3` (d = 2), `Point_3` (d = 3), constructible from its
+///         coordinates; the targets are points of the plane's type of its kernel when d = 2, else `Rest_point`
 /// \tparam CellRange a range of cells, each a random access range of 4 or 8 vertex ids
 ///
 /// \param cells the cells
@@ -139,10 +156,14 @@ std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRan
 ///
 /// \throws std::invalid_argument as `corner_simplex_indices()`, or when `rest`
 ///         is neither empty nor of `number_of_points` points
-template <int d, typename Point, typename CellRange>
-Corner_simplices<d, Point> corner_simplices(const CellRange& cells, const std::vector<Point>& rest,
-                                            std::size_t number_of_points)
+template <int d, typename Rest_point, typename CellRange>
+Corner_simplices<d, typename internal::Corner_target_point<d, Rest_point>::type>
+corner_simplices(const CellRange& cells, const std::vector<Rest_point>& rest, std::size_t number_of_points)
 {
+  static_assert(d == 3 ? Ambient_dimension<Rest_point>::value == 3 : Ambient_dimension<Rest_point>::value >= 2,
+                "hexahedra rest in 3D, quadrilaterals in the plane or on a 3D surface");
+  using Point = typename internal::Corner_target_point<d, Rest_point>::type;
+  constexpr bool surface = d == 2 && Ambient_dimension<Rest_point>::value == 3;
   constexpr std::size_t K = Corner_simplices<d, Point>::corners_per_cell;
   constexpr auto corners = cell_corners<d>();
   if(!rest.empty() && rest.size() != number_of_points)
@@ -157,7 +178,15 @@ Corner_simplices<d, Point> corner_simplices(const CellRange& cells, const std::v
     double volume = 0;
     for(std::size_t i = 0; i < K; ++i) {
       auto& t = out.targets[K * c + i];
-      for(int j = 0; j <= d; ++j) t[j] = rest.empty() ? unit[corners[i][j]] : rest[out.simplices[K * c + i][j]];
+      const auto& s = out.simplices[K * c + i];
+      if(rest.empty()) {
+        for(int j = 0; j <= d; ++j) t[j] = unit[corners[i][j]];
+      } else if constexpr(surface) {
+        const auto flat = internal::flatten_triangle(rest[s[0]], rest[s[1]], rest[s[2]]);
+        for(int j = 0; j < 3; ++j) t[j] = Point(flat[j][0], flat[j][1]);
+      } else {
+        for(int j = 0; j <= d; ++j) t[j] = rest[s[j]];
+      }
       volume += std::abs(internal::corner_volume<d>(t));
     }
     const double cell_volume = volume * (d == 2 ? 0.5 : 0.75);

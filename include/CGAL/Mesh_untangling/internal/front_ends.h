@@ -7,6 +7,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_FRONT_ENDS_H
 
 #include <CGAL/Mesh_untangling/Phantom_element.h>
+#include <CGAL/Mesh_untangling/internal/flatten_triangle.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
@@ -36,21 +37,6 @@ Eigen::Matrix<double, d, 1> to_vector(const Point& p)
   Eigen::Matrix<double, d, 1> v;
   for(int c = 0; c < d; ++c) v[c] = CGAL::to_double(p[c]);
   return v;
-}
-
-/// A 3D triangle laid flat, isometrically and positively oriented.
-template <typename Point_3>
-std::array<Eigen::Vector2d, 3> flatten_triangle(const Point_3& a, const Point_3& b, const Point_3& c)
-{
-  const Eigen::Vector3d p = to_vector<3>(a), q = to_vector<3>(b), r = to_vector<3>(c);
-  const Eigen::Vector3d e = q - p, f = r - p;
-  const double length = e.norm();
-  const Eigen::Vector3d u = length > 0 ? Eigen::Vector3d(e / length) : Eigen::Vector3d::UnitX();
-  std::array<Eigen::Vector2d, 3> t;
-  t[0] << 0, 0;
-  t[1] << length, 0;
-  t[2] << f.dot(u), u.cross(f).norm();
-  return t;
 }
 
 template <typename TriangleMesh>
