@@ -1,10 +1,11 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// make_tangled_mesh square|cube|quadsquare|hexcube N AMPLITUDE SEED OUTPUT
+// make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube N AMPLITUDE SEED OUTPUT
 // Writes a structured mesh of the unit square (2 N^2 triangles, or N^2
 // quadrilaterals) or cube (6 N^3 tetrahedra, or N^3 hexahedra) whose interior vertices are moved at random by up to
-// AMPLITUDE grid cells, boundary fixed.  OUTPUT is a Du et al. .input file
+// AMPLITUDE grid cells, boundary fixed.  quadsurface: the quadrilaterals of
+// the square as the uv map of a 3D surface (the rest, a bump over it).  OUTPUT is a Du et al. .input file
 // (rest, tangled map and fixed vertices in one file; simplices only) or any
 // mesh format that holds the elements.
 // The others hold less: .off, .vtk and .mesh one geometry, and all but .vtk
@@ -90,7 +91,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
 
 int main(int argc, char** argv)
 {
-  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|hexcube N AMPLITUDE SEED OUTPUT\n";
+  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }
   const std::string shape = argv[1];
   char* end = nullptr;
@@ -99,13 +100,14 @@ int main(int argc, char** argv)
   const double amplitude = std::strtod(argv[3], &end);
   const bool amplitude_ok = *end == 0 && amplitude >= 0 && amplitude <= 100;
   const long seed = std::strtol(argv[4], &end, 10);
-  if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "hexcube") || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
+  if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "quadsurface" && shape != "hexcube") || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
     std::cerr << usage << "N in [2, 2000], AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
     return 2;
   }
   namespace T = Mesh_untangling_tools;
   auto mesh = shape == "square" ? T::make_square_grid(n) : shape == "cube" ? T::make_cube_grid(n)
-            : shape == "quadsquare" ? T::make_quad_square_grid(n) : T::make_hex_cube_grid(n);
+            : shape == "quadsquare" ? T::make_quad_square_grid(n) : shape == "quadsurface" ? T::make_quad_surface_grid(n)
+            : T::make_hex_cube_grid(n);
   Mesh_untangling_tools::perturb_interior(mesh, n, amplitude, static_cast<std::uint32_t>(seed));
   std::string arguments;
   try {

@@ -885,6 +885,28 @@ check "quadsquare .off: quadrilaterals in the .vtk (type 9)" [ "$(grep -cx 9 qua
 run quad_fix quad.off --fix-boundary -o quad-fix.vtk --report quad_fix.json -q
 check "quadsquare --fix-boundary: 48 fixed (the grid's boundary)" json_is quad_fix.json fixed_vertices 48
 check "quadsquare --fix-boundary: exit 0" rc_is quad_fix 0
+# Quadrilaterals on a 3D surface (the uv map of a quad mesh): .obj v = the 3D
+# rest, vt = the map; each corner's target is its 3D corner laid flat.
+"$MAKE" quadsurface 10 0.9 5 qsurf.obj > /dev/null || echo "FAIL: make_tangled_mesh quadsurface" >&2
+check "quadsurface .obj: the rest is 3D (v rows with z != 0)" [ "$(awk '/^v / && $4 != 0' qsurf.obj | wc -l)" -gt 0 ]
+run qsurf qsurf.obj --fixed qsurf-fixed.txt -o qsurf-out.obj --report qsurf.json
+check "quadsurface .obj: exit 0" rc_is qsurf 0
+check "quadsurface .obj: inverted cells before" json_positive qsurf.json inverted_before
+check "quadsurface .obj: no inverted cell after" json_is qsurf.json inverted_after 0
+check "quadsurface .obj: 100 quadrilaterals" json_is qsurf.json elements 100
+check "quadsurface .obj: the 3D rest written back as read" [ "$(grep '^v ' qsurf.obj)" = "$(grep '^v ' qsurf-out.obj)" ]
+fixed_qvt() { awk 'NR == FNR { fixed[$1 + 1] = 1; next } /^vt/ { ++v; if(v in fixed) print v, $0 }' qsurf-fixed.txt "$1"; }
+check "quadsurface .obj: fixed vt rows bitwise in place" [ "$(fixed_qvt qsurf.obj)" = "$(fixed_qvt qsurf-out.obj)" ]
+"$MAKE" quadsurface 10 0.9 5 qsurf.vtk > /dev/null
+run qsurf_vtk qsurf.vtk --rest qsurf-rest.vtk -o qsurf-out.vtk --report qsurf_vtk.json -q
+check "quadsurface .vtk, 3D rest from --rest: exit 0" rc_is qsurf_vtk 0
+check "quadsurface .vtk: the same result as the .obj" \
+  [ "$(awk '/^vt/ { print $2, $3 }' qsurf-out.obj)" = "$(awk '/^POINTS/ { n = $2; next } n > 0 { print $1, $2; --n }' qsurf-out.vtk)" ]
+"$MAKE" quadsquare 10 0.9 5 qflat.obj > /dev/null
+run qflat qflat.obj --fixed qflat-fixed.txt -o qflat-out.obj -q
+check "quadsurface: the same tangled map as quadsquare's" [ "$(grep '^vt' qflat.obj)" = "$(grep '^vt' qsurf.obj)" ]
+check "quadsurface: the 3D rest gives another map than the planar rest" \
+  [ "$(grep '^vt' qflat-out.obj)" != "$(grep '^vt' qsurf-out.obj)" ]
 printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n3 0 1 2\n' > mixed.off
 mkdir bad && cd bad || exit 1
 fails off_mixed_cells 'mixed\.off:8: mixed cell kinds: face 1 is a triangle but face 0 \(line 7\) is a quadrilateral' ../mixed.off

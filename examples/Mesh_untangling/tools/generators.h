@@ -101,6 +101,19 @@ inline Mesh_file make_quad_square_grid(std::size_t n)
   return m;
 }
 
+/// The quadrilaterals of make_quad_square_grid() whose rest is a 3D surface,
+/// the bump z = h sin(pi x) sin(pi y) over the unit square, and whose map is
+/// the square itself (a uv map of a quad mesh, as quad-dominant remeshing
+/// flattens one): each corner's target is its 3D corner laid flat.
+inline Mesh_file make_quad_surface_grid(std::size_t n, double h = 0.3)
+{
+  Mesh_file m = make_quad_square_grid(n);
+  const double pi = 3.14159265358979323846;
+  m.rest_dimension = 3;
+  for(auto& p : m.rest) p[2] = h * std::sin(pi * p[0]) * std::sin(pi * p[1]);
+  return m;
+}
+
 /// (n+1)^3 vertices on [0,1]^3, n^3 hexahedra (VTK's vertex order); rest = map.
 inline Mesh_file make_hex_cube_grid(std::size_t n)
 {

@@ -57,9 +57,6 @@ void check_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
     throw Invalid_problem("the mesh has no triangles, tetrahedra, quadrilaterals or hexahedra");
   if(mesh.map_dimension == 0 || mesh.map.empty())
     throw Invalid_problem("the file has no map (positions) to untangle");
-  if(mesh.cell_size == 4 && mesh.rest_dimension == 3)
-    throw Invalid_problem("quadrilaterals are untangled in the plane against planar rest quadrilaterals, but the "
-                          "rest is 3D");
   if(mesh.cell_size == 8 && mesh.rest_dimension == 2)
     throw Invalid_problem("hexahedra need 3D rest positions");
   if(mesh.simplex_size == 3 || mesh.cell_size == 4)
@@ -96,7 +93,7 @@ std::vector<Point<d>> cgal_points(const std::vector<Coordinates>& points)
 }
 
 /// Calls `untangle(rest)` with the rest shape as the package reads it: the
-/// rest points of `mesh` (3D rest triangles are laid flat by the package),
+/// rest points of `mesh` (3D rest triangles and quadrilaterals are laid flat by the package),
 /// or none (regular targets).
 template <int d, typename Untangle>
 auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
@@ -214,9 +211,7 @@ Untangling_result untangle_cells(Mesh_file& mesh, const std::vector<bool>& is_fi
     return CGAL::untangle_cell_soup(points, cells,
                                     MU::parameters::element_figures_output(std::back_inserter(figures), package_np));
   };
-  const Untangling_result result = mesh.rest.empty()
-    ? run(CGAL::parameters::default_values())
-    : run(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
+  const Untangling_result result = with_rest_points<d>(mesh, run);
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   for(std::size_t v = 0; v < points.size(); ++v)
     for(int c = 0; c < d; ++c) mesh.map[v][c] = points[v][c];
@@ -235,6 +230,11 @@ std::vector<int> corner_orientations(const Mesh_file& mesh)
 {
   const auto corners = MU::corner_simplex_indices<d>(cells_of<d>(mesh), mesh.map.size());
   if(mesh.rest.empty()) return std::vector<int>(corners.size(), 1);
+  if constexpr(d == 2) {
+    if(mesh.rest_dimension == 3)   // corners of a 3D surface are laid flat positively
+      return MU::target_orientations(cgal_points<2>(mesh.map), corners,
+                                     MU::parameters::rest_points(cgal_points<3>(mesh.rest)));
+  }
   return MU::target_orientations(cgal_points<d>(mesh.map), corners,
                                  MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
 }
