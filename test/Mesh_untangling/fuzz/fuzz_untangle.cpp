@@ -1,21 +1,26 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// libFuzzer target for the library's public entry point: a small generated
-// mesh (a triangulated grid in 2D, a Kuhn-subdivided cube grid in 3D) whose
-// map positions and fixed flags come from the fuzz input goes through
-// CGAL::untangle_simplex_soup with a small budget.  It aborts when
+// libFuzzer target for the library's public entry points: a small generated
+// mesh (a triangulated grid in 2D, a Kuhn-subdivided cube grid in 3D, or the
+// quadrilateral or hexahedral grid) whose map positions and fixed flags come
+// from the fuzz input goes through CGAL::untangle_simplex_soup (resp.
+// CGAL::untangle_cell_soup) with a small budget.  It aborts when
 //  - a run that claims success leaves an element inverted relative to its
 //    rest orientation (without a rest: one orientation for all) or a star
 //    over-wound (exact orientation predicates of
 //    check_local_invertibility(), input defects included: a verdict must be
-//    true of the map handed back, whatever the reason for a defect);
+//    true of the map handed back, whatever the reason for a defect); for
+//    cells, a corner simplex of a cell not positive (check_cells(), exact;
+//    rest and unit cells are positive, so every corner must be);
 //  - a fixed vertex moved (any status), or an invalid input was written back.
 // Anything else that goes wrong (a crash, a sanitizer report) is libFuzzer's.
 //
 // The input, byte by byte (missing bytes read as 0):
-//   0: bit 0 3D; bits 1-2 grid size; bits 3-4 solver (auto, Newton, L-BFGS);
-//      bit 5 no rest (regular targets); bits 6-7 continuation (auto, never, always)
+//   0: bit 0 3D; bits 1-2 grid size; bits 3-4 solver (auto, Newton, L-BFGS,
+//      and 3: cells instead of simplices); bit 5 no rest (regular targets,
+//      unit cells); bits 6-7 continuation (auto, never, always, auto), for
+//      cells their solver (auto, Newton, L-BFGS, auto; continuation auto)
 //   1: the map's scale, 2^(signed byte / 4)
 //   then per vertex, while bytes last: a control byte (bit 0 fixed; bits 1-2:
 //   0 on the grid, 1 the grid moved by a signed byte / 32 of a cell per
@@ -26,6 +31,7 @@
 // MU_FUZZ_VERBOSE set in the environment prints every run's result.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/untangle_mesh.h>
 
@@ -72,7 +78,34 @@ struct Grid
 {
   std::vector<std::array<double, D>> rest;
   std::vector<std::array<std::size_t, D + 1>> simplices;
+  std::vector<std::array<std::size_t, D == 2 ? 4 : 8>> cells;   // cell grids only
 };
+
+// The unit grid of quadrilaterals (D = 2) or hexahedra (D = 3, VTK's order),
+// every cell positive.
+template <int D>
+Grid<D> cell_grid(std::size_t n)
+{
+  Grid<D> g;
+  const std::size_t m = n + 1;
+  auto id = [m](std::size_t i, std::size_t j, std::size_t k) { return i + m * (j + m * k); };
+  for(std::size_t k = 0; k < (D == 2 ? 1 : m); ++k)
+    for(std::size_t j = 0; j < m; ++j)
+      for(std::size_t i = 0; i < m; ++i) {
+        if constexpr(D == 2) g.rest.push_back({double(i), double(j)});
+        else g.rest.push_back({double(i), double(j), double(k)});
+      }
+  for(std::size_t k = 0; k < (D == 2 ? 1 : n); ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i) {
+        if constexpr(D == 2)
+          g.cells.push_back({id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0)});
+        else
+          g.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                             id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+      }
+  return g;
+}
 
 Grid<2> triangulated_grid(std::size_t n)
 {
@@ -200,11 +233,27 @@ void check_success(const Grid<D>& grid, bool rest_given, const std::vector<std::
     wrong("success claimed with inverted elements or over-wound stars among fixed vertices", r);
 }
 
+// The cells' verdict of a claimed success: every corner simplex positive
+// (rest and unit cells are), input defects included.
+template <int D>
+void check_cells_success(const Grid<D>& grid, const std::vector<std::array<double, D>>& result,
+                         const std::vector<bool>& fixed, const MU::Untangling_result& r)
+{
+  const MU::Invertibility_report report =
+    MU::check_cells<D>(result, grid.cells, std::vector<int>(grid.cells.size() * (D == 2 ? 4 : 8), 1), fixed);
+  if(report.inverted_elements != 0)
+    wrong("success claimed with an inverted cell", r);
+  if(report.input_defects != 0 || !report.is_locally_invertible())
+    wrong("success claimed with a cell inverted among fixed vertices", r);
+}
+
 template <int D>
 void run(Bytes& in, std::uint8_t head)
 {
   const std::size_t n = D == 2 ? 2 + ((head >> 1) & 3) : 1 + ((head >> 1) & 3);
-  const Grid<D> grid = [n] {
+  const bool cells = ((head >> 3) & 3) == 3;
+  const Grid<D> grid = [n, cells] {
+    if(cells) return cell_grid<D>(n);
     if constexpr(D == 2) return triangulated_grid(n);
     else return kuhn_cube_grid(n);
   }();
@@ -232,15 +281,17 @@ void run(Bytes& in, std::uint8_t head)
   const MU::Continuation continuations[] = {MU::Continuation::AUTOMATIC, MU::Continuation::NEVER,
                                             MU::Continuation::ALWAYS, MU::Continuation::AUTOMATIC};
   const auto np = MU::parameters::solver(
-      solvers[(head >> 3) & 3],
-      MU::parameters::continuation(continuations[(head >> 6) & 3],
+      solvers[(head >> (cells ? 6 : 3)) & 3],
+      MU::parameters::continuation(cells ? MU::Continuation::AUTOMATIC : continuations[(head >> 6) & 3],
                                    CGAL::parameters::vertex_is_constrained_map(is_fixed)
                                        .number_of_iterations(std::size_t(30))
                                        .maximum_running_time(2.)));
   const bool rest_given = !(head & 32);
   const MU::Untangling_result r =
-    !rest_given ? CGAL::untangle_simplex_soup(points, grid.simplices, np)
-                : CGAL::untangle_simplex_soup(points, grid.simplices, MU::parameters::rest_points(rest, np));
+    cells ? (!rest_given ? CGAL::untangle_cell_soup(points, grid.cells, np)
+                         : CGAL::untangle_cell_soup(points, grid.cells, MU::parameters::rest_points(rest, np)))
+          : !rest_given ? CGAL::untangle_simplex_soup(points, grid.simplices, np)
+                        : CGAL::untangle_simplex_soup(points, grid.simplices, MU::parameters::rest_points(rest, np));
 
   std::vector<std::array<double, D>> result;
   for(const auto& p : points)
@@ -254,8 +305,10 @@ void run(Bytes& in, std::uint8_t head)
   static const bool verbose = std::getenv("MU_FUZZ_VERBOSE") != nullptr;
   if(verbose)
     describe("done", r);
-  if(r.is_locally_invertible())
-    check_success<D>(grid, rest_given, result, fixed, r);
+  if(r.is_locally_invertible()) {
+    if(cells) check_cells_success<D>(grid, result, fixed, r);
+    else check_success<D>(grid, rest_given, result, fixed, r);
+  }
 }
 
 } // namespace
