@@ -8,12 +8,13 @@
 // exact checks.  Prints one markdown row per family.
 //
 //   benchmark_free_boundary [--family NAME,...] [--quick|--large] [--time-limit S] [--threads N]
-//                           [--instance NAME,...] [--verbose] [--write DIR] [--list]
+//                           [--instance NAME,...] [--verbose] [--trace] [--write DIR] [--list]
 
 #include "free_boundary_families.h"
 #include "thread_limit.h"
 
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+#include <CGAL/Mesh_untangling/Untangling_step.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -23,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <new>
@@ -43,7 +45,7 @@ namespace {
 
 const char* const usage_text =
   "usage: benchmark_free_boundary [--family NAME,...] [--quick|--large] [--time-limit SECONDS] [--threads N]\n"
-  "                               [--instance NAME,...] [--verbose] [--write DIR] [--list]\n"
+  "                               [--instance NAME,...] [--verbose] [--trace] [--write DIR] [--list]\n"
   "\n"
   "Generates the seeded instances of the free-boundary stress families, untangles each through\n"
   "CGAL::untangle_mesh (triangles) or CGAL::untangle_simplex_soup (tetrahedra) with the default\n"
@@ -59,6 +61,8 @@ const char* const usage_text =
   "  --threads N           at most N threads in the untangler (default: TBB's choice)\n"
   "  --instance NAME,...   only these instances (names as --verbose or --list prints them)\n"
   "  --verbose             one line per instance with its failure figures\n"
+  "  --trace               one line per eps step on stderr (motion of the continuation, stage, eps,\n"
+  "                        min det J, non-positive elements, seconds)\n"
   "  --write DIR           write each selected instance as DIR/NAME.input (rest, map, fixed\n"
   "                        vertices: the command-line tool reads it) instead of running it\n"
   "  --list                list the families and their instances, run nothing\n";
@@ -75,7 +79,7 @@ struct Arguments
   double time_limit = 60;
   int threads = 0;
   std::vector<std::string> instances;
-  bool verbose = false, list = false;
+  bool verbose = false, list = false, trace = false;
   std::string write_directory;
 };
 
@@ -118,6 +122,7 @@ Arguments parse_arguments(int argc, char** argv)
     } else if(argument == "--quick") quick = true;
     else if(argument == "--large") large = true;
     else if(argument == "--verbose") a.verbose = true;
+    else if(argument == "--trace") a.trace = true;
     else if(argument == "--list") a.list = true;
     else if(argument == "--family") {
       const std::string v = value();
@@ -168,13 +173,20 @@ void write_all(int fd, const std::string& text)
   }
 }
 
-void child_run(int fd, const Family_instance& instance, double time_limit, int threads)
+void child_run(int fd, const Family_instance& instance, double time_limit, int threads, bool trace)
 {
   const Thread_limit limit(threads);
   auto send = [fd](const std::string& key, const std::string& value) { write_all(fd, key + "\t" + value + "\n"); };
   try {
     Mesh_file mesh = instance.make();
-    const Judgement j = untangle_and_judge(mesh, time_limit);
+    std::function<bool(const CGAL::Mesh_untangling::Untangling_step&)> tracer;
+    if(trace)
+      tracer = [](const CGAL::Mesh_untangling::Untangling_step& s) {
+        std::fprintf(stderr, "  step %4zu motion %.4f stage %d eps %.3e min det %.3e non-positive %zu (%zu iterations) %.2f s\n",
+                     s.step, s.motion, s.stage, s.epsilon, s.min_det, s.non_positive, s.inner_iterations, s.seconds);
+        return true;
+      };
+    const Judgement j = untangle_and_judge(mesh, time_limit, tracer);
     std::ostringstream out;
     out.precision(4);
     out << j.vertices << " " << j.elements << " " << j.fixed << " " << j.seconds << " " << j.inverted_before << " "
@@ -206,7 +218,7 @@ struct Outcome
 
 constexpr double kill_margin_seconds = 15;
 
-Outcome run_in_child(const Family_instance& instance, double time_limit, int threads)
+Outcome run_in_child(const Family_instance& instance, double time_limit, int threads, bool trace)
 {
   Outcome o;
   o.name = instance.name;
@@ -227,7 +239,7 @@ Outcome run_in_child(const Family_instance& instance, double time_limit, int thr
   }
   if(pid == 0) {
     ::close(fds[0]);
-    child_run(fds[1], instance, time_limit, threads);
+    child_run(fds[1], instance, time_limit, threads, trace);
     ::close(fds[1]);
     ::_exit(0);
   }
@@ -388,7 +400,7 @@ int main(int argc, char** argv)
     double peak = 0, peak_per_element = 0;   // the latter: of the largest instance
     std::size_t largest = 0;
     for(const Family_instance& instance : instances) {
-      const Outcome o = run_in_child(instance, a.time_limit, a.threads);
+      const Outcome o = run_in_child(instance, a.time_limit, a.threads, a.trace);
       invertible += o.ran && o.j.locally_invertible && o.j.fixed_moved == 0;
       passed += o.passes;
       seconds.push_back(o.ran ? o.j.seconds : o.wall_seconds);

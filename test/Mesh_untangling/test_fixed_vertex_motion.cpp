@@ -4,7 +4,8 @@
 // The path of the fixed vertices in a continuation
 // (internal/fixed_vertex_motion.h): exact ends, rigid groups that keep their
 // shape on the way (a straight line collapses a group turned by 180° at half
-// the motion), groups too small or flat for a fit on straight lines.  End to
+// the motion), flat groups turned too, single vertices fitted together when
+// one rigid motion explains them, the others on straight lines.  End to
 // end, benchmark_free_boundary --family cavities-kuhn measures it (two
 // cavities turned 180°, margin 6: 7.3 s by continuation, not locally
 // invertible after 60 s on straight lines).
@@ -15,6 +16,7 @@
 #include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace MI = CGAL::Mesh_untangling::internal;
@@ -73,13 +75,62 @@ void check_rigid_group()
 
 void check_groups_on_straight_lines()
 {
-  // the same cube with only 3 corners fixed: no fit, straight lines
+  // the same cube with only 2 corners fixed (a line: no rotation to follow):
+  // straight lines
+  Turned_cube c(180);
+  c.in.is_fixed.assign(9, false);
+  c.in.is_fixed[0] = c.in.is_fixed[1] = true;
+  const MI::Fixed_vertex_motion<3> path(c.in, c.rest, c.given);
+  CHECK(path.largest_angle() == 0);
+  CHECK((path.position(1, 0.5) - 0.5 * (c.rest[1] + c.given[1])).norm() < 1e-12);
+}
+
+void check_flat_group()
+{
+  // 3 corners fixed, a triangle: it fixes the rotation (the end face of a
+  // twisted bar is flat), and keeps its shape on the way
   Turned_cube c(180);
   c.in.is_fixed.assign(9, false);
   c.in.is_fixed[0] = c.in.is_fixed[1] = c.in.is_fixed[3] = true;
   const MI::Fixed_vertex_motion<3> path(c.in, c.rest, c.given);
-  CHECK(path.largest_angle() == 0);
-  CHECK((path.position(1, 0.5) - 0.5 * (c.rest[1] + c.given[1])).norm() < 1e-12);
+  CHECK_MESSAGE(std::abs(path.largest_angle() - pi) < 1e-9, "angle " << path.largest_angle());
+  for(double motion : {0.25, 0.5, 0.75})
+    for(auto [a, b] : {std::pair<int, int>{0, 1}, {0, 3}, {1, 3}}) {
+      const double ratio = (path.position(a, motion) - path.position(b, motion)).norm() / (c.rest[a] - c.rest[b]).norm();
+      CHECK_MESSAGE(std::abs(ratio - 1) < 1e-9, "at " << motion << ": edge " << a << "-" << b << " scaled by " << ratio);
+    }
+}
+
+/// A strip of 3 triangles, vertices 0 and 4 (not adjacent) fixed.
+MI::Untangling_input<2> strip(const std::vector<Eigen::Vector2d>& given)
+{
+  MI::Untangling_input<2> in;
+  in.positions = given;
+  in.elements = {{0, 1, 2}, {1, 3, 2}, {2, 3, 4}};
+  in.is_fixed = {true, false, false, false, true};
+  return in;
+}
+
+void check_loose_vertices()
+{
+  // two single fixed vertices swapped: on straight lines they meet halfway;
+  // fitted together, they turn by a half-turn about their midpoint
+  const std::vector<Eigen::Vector2d> rest = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0, 2}};
+  std::vector<Eigen::Vector2d> given = rest;
+  std::swap(given[0], given[4]);
+  const MI::Fixed_vertex_motion<2> swap(strip(given), rest, given);
+  CHECK_MESSAGE(std::abs(swap.largest_angle() - pi) < 1e-9, "swap: angle " << swap.largest_angle());
+  for(double motion : {0.25, 0.5, 0.75}) {
+    const double distance = (swap.position(0, motion) - swap.position(4, motion)).norm();
+    CHECK_MESSAGE(std::abs(distance - 2) < 1e-9, "swap at " << motion << ": the two vertices " << distance << " apart");
+  }
+  CHECK(swap.position(0, 1) == given[0] && swap.position(4, 1) == given[4]);
+  // moved apart (no rigid motion explains it): straight lines
+  given = rest;
+  given[4] = {0, 5};
+  const MI::Fixed_vertex_motion<2> stretch(strip(given), rest, given);
+  CHECK(stretch.largest_angle() == 0);
+  CHECK((stretch.position(4, 0.5) - Eigen::Vector2d(0, 3.5)).norm() < 1e-12);
 }
 
 } // namespace
@@ -88,5 +139,7 @@ int main()
 {
   check_rigid_group();
   check_groups_on_straight_lines();
+  check_flat_group();
+  check_loose_vertices();
   return test::exit_code();
 }

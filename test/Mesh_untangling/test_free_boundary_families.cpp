@@ -76,6 +76,13 @@ int main()
     check_instance("grid 10 swap " + std::to_string(a) + "-" + std::to_string(b),
                    swap_two_vertices(make_square_grid(10), a, b), true);
   check_instance("jittered Delaunay 10 swap 50-120", swap_two_vertices(make_jittered_delaunay(10, 1), 50, 120), true);
+  // Through the uv-map entry each triangle's target sits in a frame of its
+  // own: the continuation needs the flat rest glued from them, placed on the
+  // two fixed vertices (the half-turn that swaps them).  These two ended
+  // with one inverted triangle after stage 1's shakes, no continuation.
+  for(const Family_instance& i : free_boundary_family("swap-irregular", Family_size::DEFAULT))
+    if(i.name == "swap-irregular-13-195-141-s1" || i.name == "swap-irregular-19-378-132-s6")
+      check_instance(i.name, i.make(), i.boundary_should_be_simple);
   for(int fixed = 0; fixed < 4; ++fixed) {
     const std::string name = "12-star, fixed mode " + std::to_string(fixed);
     check_tangled(name, make_twelve_star(fixed, 70, 0.05, 3), 1);
@@ -102,7 +109,7 @@ int main()
   for(const auto& f : free_boundary_families()) {   // (built only with TetGen)
     if(f.name != "cavities-tetgen" && f.name != "locked-region-tetgen") continue;
     for(const Family_instance& i : free_boundary_family(f.name, Family_size::QUICK))
-      if(i.name == "cavities-tetgen-h1-135deg" || i.name == "locked-tetgen-ball-wave0.1-h0.6") {
+      if(i.name == "cavities-tetgen-h1-135deg" || i.name == "locked-tetgen-ball-wave0.08-h0.6") {
         check_tangled(i.name, i.make(), 1);
         check_instance(i.name, i.make(), true);
       }
@@ -135,6 +142,8 @@ int main()
   check_refused("bar motion 'spin'", [] { return make_bar(4, 2, "spin", 90); });
   check_refused("locked region 'top'", [] { return make_locked_region(4, "top", "twist", 90); });
   check_refused("locked deformation 'melt'", [] { return make_locked_region(4, "ball", "melt", 90); });
+  // a mesh too coarse for its deformation makes an instance with no solution
+  check_refused("a twist of 720° on a 3^3 cube", [] { return make_locked_region(3, "bottom", "twist", 720); });
 
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();

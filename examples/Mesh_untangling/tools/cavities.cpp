@@ -79,12 +79,15 @@ CGAL::Mesh_untangling::IO::Mesh_file make_cavities_problem(const Cavities_option
   for(std::size_t c = 0; c < cavity_centres.size(); ++c)
     for(int i = 0; i < 3; ++i) in.holelist[3 * c + i] = cavity_centres[c][i];
 
-  // p: the PLC; q1.4: radius-edge ratio bound (isotropic elements); a: the
+  // p: the PLC; q1.4: radius-edge ratio bound (isotropic elements), then
+  // the dihedral angle bound if any; a: the
   // volume of a regular tetrahedron of edge mesh_size; Q: quiet.
   const double volume = std::pow(options.mesh_size, 3) / (6 * std::sqrt(2.));
   std::ostringstream switches;
   switches.precision(17);
-  switches << "pq1.4a" << volume << "Q";
+  switches << "pq1.4";
+  if(options.min_dihedral_degrees > 0) switches << "/" << options.min_dihedral_degrees;
+  switches << "a" << volume << "Q";
   std::string s = switches.str();
   tetgenbehavior behavior;
   if(!behavior.parse_commandline(&s[0]))

@@ -22,6 +22,10 @@ struct Cavities_options
   double mesh_size = 0.25;
   /// rotation of each cavity boundary about its vertical axis, in degrees
   double rotation_degrees = 135;
+  /// TetGen's bound on the smallest dihedral angle, in degrees (0: none, its
+  /// default; a bound removes the slivers, which a smooth deformation of the
+  /// mesh inverts first)
+  double min_dihedral_degrees = 0;
 };
 
 /// The cuboid [0,4] × [0,2] × [0,2] without the unit cubes centred at

@@ -87,12 +87,16 @@ Mesh_file make_bar(std::size_t nx, std::size_t w, const std::string& motion, dou
 /// rest at rest.  Deformations (each a diffeomorphism of space, so a valid
 /// map exists): "twist", a turn about the vertical axis by `strength` * (1/2 + z)
 /// degrees; "wave", a displacement (sin pi y sin 2 pi z, sin pi z sin 2 pi x,
-/// sin pi x sin 2 pi y) times `strength` (below 1 / (2 pi)).
+/// sin pi x sin 2 pi y) times `strength` (below 1 / (2 pi)).  Every
+/// instance has a solution: the whole mesh deformed, which must invert no
+/// tetrahedron; throws std::invalid_argument when the mesh is too coarse
+/// for the deformation.
 Mesh_file make_locked_region(std::size_t n, const std::string& region, const std::string& deformation, double strength);
 
 /// The same on the TetGen mesh of the cavities problem (tools/cavities.h) at
-/// `mesh_size`, its cavity walls free: the region and deformation of the unit
-/// cube stretched to the 4 x 2 x 2 cuboid.  Only when TetGen is built.
+/// `mesh_size`, with a bound of 15 degrees on its dihedral angles, its cavity
+/// walls free: the region and deformation of the unit cube stretched to the
+/// 4 x 2 x 2 cuboid.  Only when TetGen is built.
 Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region, const std::string& deformation,
                                     double strength);
 

@@ -25,6 +25,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -33,15 +35,104 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// The flat rest of a 2D mesh whose targets each sit in a frame of their
+/// own (the uv-map entry lays every triangle of a 3D domain flat on its
+/// own): the targets glued across shared edges by rigid motions, when they
+/// close up (to 1e-8 of an edge) at every vertex, which they do when the
+/// domain is flat (developable without cones).  The glued rest is placed
+/// by the rigid motion that best fits its fixed vertices (or, when they fix
+/// none, all its vertices) to the given map: its frame is arbitrary, and
+/// this one leaves the fixed vertices the least way to go (two swapped
+/// vertices, none).  None when the targets do not close up.
+inline std::optional<std::vector<Eigen::Vector2d>> glued_flat_rest(const Untangling_input<2>& in)
+{
+  using Vector = Eigen::Vector2d;
+  const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
+  if(in.targets.size() < m || m == 0) return std::nullopt;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> elements_of_edge;
+  for(std::size_t k = 0; k < m; ++k)
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t a = in.elements[k][i], b = in.elements[k][(i + 1) % 3];
+      elements_of_edge[std::minmax(a, b)].push_back(k);
+    }
+  std::vector<Vector> rest(in.positions.begin(), in.positions.begin() + n);
+  std::vector<char> placed(n, 0), visited(m, 0);
+  const auto close = [](const Vector& p, const Vector& q, double length) { return (p - q).norm() <= 1e-8 * length; };
+  for(std::size_t seed = 0; seed < m; ++seed) {
+    if(visited[seed]) continue;
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t v = in.elements[seed][i];
+      if(placed[v]) return std::nullopt;   // (two components through one vertex: validate_stars refuses them)
+      rest[v] = in.targets[seed][i];
+      placed[v] = 1;
+    }
+    visited[seed] = 1;
+    std::vector<std::size_t> queue = {seed};
+    while(!queue.empty()) {
+      const std::size_t k = queue.back();
+      queue.pop_back();
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t a = in.elements[k][i], b = in.elements[k][(i + 1) % 3];
+        for(std::size_t j : elements_of_edge[std::minmax(a, b)]) {
+          if(visited[j]) continue;
+          int ia = 0, ib = 0;
+          while(in.elements[j][ia] != a) ++ia;
+          while(in.elements[j][ib] != b) ++ib;
+          const int ic = 3 - ia - ib;
+          const auto& t = in.targets[j];
+          const Vector target_edge = t[ib] - t[ia], placed_edge = rest[b] - rest[a];
+          const double length = placed_edge.norm();
+          if(!(length > 0) || !close(Vector(target_edge.norm(), 0), Vector(length, 0), length)) return std::nullopt;
+          // the rotation taking the target's edge onto the placed one
+          const double c = target_edge.dot(placed_edge), s = target_edge.x() * placed_edge.y() - target_edge.y() * placed_edge.x();
+          const double r = std::hypot(c, s);
+          Eigen::Matrix2d turn;
+          turn << c / r, -s / r, s / r, c / r;
+          const Vector third = rest[a] + turn * (t[ic] - t[ia]);
+          const std::size_t v = in.elements[j][ic];
+          if(placed[v] && !close(rest[v], third, length)) return std::nullopt;
+          rest[v] = third;
+          placed[v] = 1;
+          visited[j] = 1;
+          queue.push_back(j);
+        }
+      }
+    }
+  }
+  std::vector<Vector> from, to;
+  for(std::size_t v = 0; v < n; ++v)
+    if(placed[v] && v < in.is_fixed.size() && in.is_fixed[v]) { from.push_back(rest[v]); to.push_back(in.positions[v]); }
+  std::optional<Eigen::Matrix2d> turn = Fixed_vertex_motion<2>::best_rotation(from, to);
+  if(!turn) {
+    from.clear();
+    to.clear();
+    for(std::size_t v = 0; v < n; ++v)
+      if(placed[v]) { from.push_back(rest[v]); to.push_back(in.positions[v]); }
+    turn = Fixed_vertex_motion<2>::best_rotation(from, to);
+  }
+  if(!turn) return rest;
+  Vector from_centre = Vector::Zero(), to_centre = Vector::Zero();
+  for(std::size_t i = 0; i < from.size(); ++i) { from_centre += from[i]; to_centre += to[i]; }
+  from_centre /= double(from.size());
+  to_centre /= double(from.size());
+  for(std::size_t v = 0; v < n; ++v)
+    if(placed[v]) rest[v] = to_centre + *turn * (rest[v] - from_centre);
+  return rest;
+}
+
 /// Where the continuation starts, when it applies to `in`: the rest shape
 /// (every element at its target, so locally invertible) when the targets
-/// describe one in the map's dimension and some vertex is fixed; otherwise
-/// there is no prescribed motion to follow.  `in` must be valid.
+/// describe one in the map's dimension (in 2D, also when they glue into a
+/// flat one: glued_flat_rest) and some vertex is fixed; otherwise there is
+/// no prescribed motion to follow.  `in` must be valid.
 template <int d>
 std::optional<std::vector<Eigen::Matrix<double, d, 1>>> continuation_start(const Untangling_input<d>& in)
 {
   if(std::find(in.is_fixed.begin(), in.is_fixed.end(), true) == in.is_fixed.end()) return std::nullopt;
-  return rest_shape<d>(in);
+  std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest = rest_shape<d>(in);
+  if constexpr(d == 2)
+    if(!rest) rest = glued_flat_rest(in);
+  return rest;
 }
 
 /// Fewer inverted elements first, then fewer over-wound stars.

@@ -10,8 +10,12 @@
 // and translation that best fit its rest to its given positions, Kabsch's
 // fit by the singular value decomposition) whose angle grows with the
 // motion, plus the rest of its displacement (the residual of the fit) on
-// straight lines.  Groups of fewer than d + 1 vertices, or flat ones, move
-// on straight lines.
+// straight lines.  The vertices of groups that do not fix a rotation of
+// their own (single vertices; in 3D, lines) are fitted together, when one rigid
+// motion explains their displacement: two vertices of a 2D mesh swapped,
+// only they fixed, would otherwise meet halfway, where no map keeps them
+// apart; they turn by a half-turn instead.  Otherwise they move on
+// straight lines.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H
 
@@ -22,6 +26,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +47,31 @@ public:
   {
     find_groups(in);
     for(Group& g : groups_) fit(g);
+    fit_loose_vertices();
+  }
+
+  /// The proper rotation that best turns `rest` (about its centroid) onto
+  /// `given` (about its own), Kabsch's fit; none when the points do not fix
+  /// one (they span fewer than d - 1 dimensions, or are not finite).
+  static std::optional<Matrix> best_rotation(const std::vector<Vector>& rest, const std::vector<Vector>& given)
+  {
+    if(rest.size() < 2 || rest.size() != given.size()) return std::nullopt;
+    Vector rest_centre = Vector::Zero(), given_centre = Vector::Zero();
+    for(std::size_t i = 0; i < rest.size(); ++i) { rest_centre += rest[i]; given_centre += given[i]; }
+    rest_centre /= double(rest.size());
+    given_centre /= double(rest.size());
+    Matrix covariance = Matrix::Zero();
+    for(std::size_t i = 0; i < rest.size(); ++i)
+      covariance += (rest[i] - rest_centre) * (given[i] - given_centre).transpose();
+    Eigen::JacobiSVD<Matrix> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Vector s = svd.singularValues();
+    // a rank of d - 1 still fixes a proper rotation (the last axis follows)
+    if(!(s(0) > 0) || !(s(d - 2) > 1e-9 * s(0))) return std::nullopt;
+    Matrix reflection = Matrix::Identity();
+    reflection(d - 1, d - 1) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1 : 1;
+    const Matrix rotation = svd.matrixV() * reflection * svd.matrixU().transpose();
+    if(!rotation.allFinite()) return std::nullopt;
+    return rotation;
   }
 
   /// Where fixed vertex `v` is at `motion` (0: rest, 1: given, exactly).
@@ -85,6 +115,8 @@ private:
       return v;
     };
     const auto fixed = [&in](std::size_t v) { return v < in.is_fixed.size() && in.is_fixed[v]; };
+    is_fixed_.assign(n, false);
+    for(std::size_t v = 0; v < n; ++v) is_fixed_[v] = fixed(v);
     for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k)
       for(int i = 0; i <= d; ++i)
         for(int j = i + 1; j <= d; ++j) {
@@ -103,27 +135,54 @@ private:
   }
 
   /// Kabsch's fit of `g`'s rest to its given positions; a group it cannot
-  /// orient (too few vertices, flat) is left to straight lines.
+  /// orient (a single vertex, a line in 3D) is left to straight lines.  A
+  /// flat group (the end face of a twisted bar) fixes its rotation: on
+  /// straight lines, an end turned by 180 degrees collapses to its centre
+  /// at half the motion.
   void fit(Group& g)
   {
+    std::vector<Vector> rest, given;
+    for(std::size_t v : g.vertices) { rest.push_back(rest_[v]); given.push_back(given_[v]); }
+    const std::optional<Matrix> rotation = best_rotation(rest, given);
+    if(!rotation) return unfit(g);
     const double count = double(g.vertices.size());
-    if(g.vertices.size() <= std::size_t(d)) return unfit(g);
     for(std::size_t v : g.vertices) { g.rest_centre += rest_[v] / count; g.given_centre += given_[v] / count; }
-    Matrix covariance = Matrix::Zero();
-    for(std::size_t v : g.vertices) covariance += (rest_[v] - g.rest_centre) * (given_[v] - g.given_centre).transpose();
-    Eigen::JacobiSVD<Matrix> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const Vector s = svd.singularValues();
-    if(!(s(d - 1) > 1e-9 * s(0))) return unfit(g);   // flat (or not finite): no orientation to follow
-    Matrix reflection = Matrix::Identity();
-    reflection(d - 1, d - 1) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1 : 1;
-    g.rotation = svd.matrixV() * reflection * svd.matrixU().transpose();
-    g.rigid = g.rotation.allFinite();
-    if(!g.rigid) unfit(g);
+    g.rotation = *rotation;
+    g.rigid = true;
   }
 
   void unfit(Group& g)
   {
     for(std::size_t v : g.vertices) group_of_[v] = none;
+  }
+
+  /// One group of the fixed vertices that fit() left on straight lines, when
+  /// a rigid motion takes them to their given positions to a tenth of their
+  /// spread (RMS): a rotation that fits them worse is no motion of theirs.
+  void fit_loose_vertices()
+  {
+    Group g;
+    std::vector<Vector> rest, given;
+    for(std::size_t v = 0; v < group_of_.size(); ++v)
+      if(is_fixed_[v] && group_of_[v] == none) {
+        g.vertices.push_back(v);
+        rest.push_back(rest_[v]);
+        given.push_back(given_[v]);
+      }
+    const std::optional<Matrix> rotation = best_rotation(rest, given);
+    if(!rotation) return;
+    const double count = double(g.vertices.size());
+    for(std::size_t i = 0; i < rest.size(); ++i) { g.rest_centre += rest[i] / count; g.given_centre += given[i] / count; }
+    double residual = 0, spread = 0;
+    for(std::size_t i = 0; i < rest.size(); ++i) {
+      residual += (given[i] - g.given_centre - *rotation * (rest[i] - g.rest_centre)).squaredNorm();
+      spread += (rest[i] - g.rest_centre).squaredNorm();
+    }
+    if(!(residual <= 0.01 * spread)) return;
+    g.rotation = *rotation;
+    g.rigid = true;
+    for(std::size_t v : g.vertices) group_of_[v] = groups_.size();
+    groups_.push_back(std::move(g));
   }
 
   static double rotation_angle(const Matrix& r)
@@ -150,6 +209,7 @@ private:
   const std::vector<Vector>& given_;
   std::vector<Group> groups_;
   std::vector<std::size_t> group_of_;
+  std::vector<bool> is_fixed_;
 };
 
 } // namespace internal
