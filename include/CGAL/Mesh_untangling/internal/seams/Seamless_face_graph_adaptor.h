@@ -37,6 +37,8 @@ public:
   std::size_t number_of_cones() const { return cones_; }
   /// the mesh vertex of the solver's vertex (a wedge) `w`
   vertex_descriptor vertex(std::size_t w) const { return vertices_.vertex(seams_.vertex_of_wedge[w]); }
+  /// the position of that vertex in `vertices(tm)`
+  std::size_t vertex_index(std::size_t w) const { return seams_.vertex_of_wedge[w]; }
 
   /// The wedges, their links and the flattened faces; `error()` says why
   /// when the seams cannot be (the input is then empty).
