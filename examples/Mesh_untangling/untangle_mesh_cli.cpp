@@ -607,7 +607,8 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
 /// simplex report, and the seams.
 void write_seamless_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
                            const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& before,
-                           const Verdict& v, const Seam_summary& seams)
+                           const Verdict& v, const Seam_summary& seams, const Grid_singularities& grid_before,
+                           const Grid_singularities& grid_after)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -624,6 +625,10 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["seams_kept"] = seams.same_seams;
   j["max_translation_change"] = seams.max_translation_change;
   j["max_seam_side_gap"] = seams.max_side_gap;
+  j["integer_grid_singular_vertices_before"] = grid_before.singular;
+  j["integer_grid_singular_vertices_after"] = grid_after.singular;
+  j["integer_grid_singular_at_vertices_after"] = grid_after.at_vertices;
+  j["integer_grid_points_in_inverted_before"] = grid_before.in_inverted;
   j["phantom_protection"] = false;
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
@@ -685,6 +690,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     run.input_picture->title = args.input + " (input)";
   }
   const Mesh_file given = mesh;
+  const Grid_singularities grid_before = integer_grid_singularities(mesh);
   std::unique_ptr<Progress_display> display;
   if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
   Run_options options = run_options(args, display.get());
@@ -697,6 +703,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   Mesh_file written = IO::read_mesh_file(to.output);   // the verdict on the coordinates as written
   const Verdict verdict = check_mesh_file(written, run.fixed);
   const Seam_summary seams = compare_seams(given, written);
+  const Grid_singularities grid_after = integer_grid_singularities(written);
   if(!args.svg_input.empty())
     write_text_file(args.svg_input, to.svg_input, [&](std::ostream& out) { write_svg(out, *run.input_picture); });
   if(!args.svg.empty()) {
@@ -706,7 +713,8 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   }
   if(!args.report.empty())
     write_text_file(args.report, to.report, [&](std::ostream& out) {
-      write_seamless_report(out, args, run.fixed_source, mesh, run.result, before, verdict, seams);
+      write_seamless_report(out, args, run.fixed_source, mesh, run.result, before, verdict, seams, grid_before,
+                            grid_after);
     });
   files.commit();
   if(!args.quiet) {
@@ -719,6 +727,8 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
                  "by at most %.3g\n", seams.seam_edges, seams.cones,
                  seams.same_seams ? "the same seams and rotations" : "SEAMS CHANGED", seams.max_translation_change,
                  seams.max_side_gap);
+    std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)\n",
+                 grid_before.singular, grid_after.singular, grid_after.at_vertices);
     if(!verdict.locally_invertible)
       std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
                                                                    : run.result.message.c_str());

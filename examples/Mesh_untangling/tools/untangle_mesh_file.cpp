@@ -17,7 +17,9 @@
 #include "seamless_surface.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <set>
 #include <type_traits>
 
 namespace Mesh_untangling_tools {
@@ -522,6 +524,67 @@ Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after)
   return s;
 }
 
+Grid_singularities integer_grid_singularities(const Mesh_file& mesh)
+{
+  check_seamless_shape(mesh, {});
+  Grid_singularities g;
+  const double pi = std::acos(-1.);
+  using Uv = MU::internal::Uv;
+  const auto uv_of = [&](std::size_t k, int i) {
+    const auto& p = mesh.corner_map[mesh.simplex_corner_map[k][i]];
+    return Uv{p[0], p[1]};
+  };
+  const auto cross = [](const Uv& a, const Uv& b) { return a[0] * b[1] - a[1] * b[0]; };
+  const auto is_integer = [](const Uv& p) { return p[0] == std::round(p[0]) && p[1] == std::round(p[1]); };
+  // vertices: the signed angle sums of their corners (the charts differ by rotations, which keep angles)
+  std::vector<double> angle(mesh.rest.size(), 0.);
+  std::vector<char> on_integer(mesh.rest.size(), 0), in_face(mesh.rest.size(), 0);
+  std::vector<int> sign(mesh.simplices.size());
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k) {
+    const Uv a = uv_of(k, 0), b = uv_of(k, 1), c = uv_of(k, 2);
+    const double det = cross(MU::internal::minus(b, a), MU::internal::minus(c, a));
+    sign[k] = det > 0 ? 1 : -1;
+    for(int i = 0; i < 3; ++i) {
+      const Uv p = uv_of(k, i), u = MU::internal::minus(uv_of(k, (i + 1) % 3), p),
+               w = MU::internal::minus(uv_of(k, (i + 2) % 3), p);
+      const std::size_t v = mesh.simplices[k][i];
+      angle[v] += sign[k] * std::atan2(std::abs(cross(u, w)), u[0] * w[0] + u[1] * w[1]);
+      in_face[v] = 1;
+      if(is_integer(p)) on_integer[v] = 1;
+    }
+  }
+  const std::vector<bool> boundary = boundary_vertices(mesh);
+  for(std::size_t v = 0; v < mesh.rest.size(); ++v)
+    if(in_face[v] && on_integer[v] && !boundary[v] && std::lround(4 * angle[v] / (2 * pi)) != 4) ++g.at_vertices;
+  // integer points off the vertices, in or on the edges of non-positive triangles (an edge's point once)
+  std::set<std::array<long long, 4>> edge_points;
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k) {
+    if(sign[k] > 0) continue;
+    const Uv a = uv_of(k, 0), b = uv_of(k, 1), c = uv_of(k, 2);
+    const double det = cross(MU::internal::minus(b, a), MU::internal::minus(c, a));
+    if(det == 0) continue;   // (a flat triangle covers no area: its edges' points are counted by its neighbours)
+    for(long long x = (long long)std::ceil((std::min)({a[0], b[0], c[0]})); x <= (std::max)({a[0], b[0], c[0]}); ++x)
+      for(long long y = (long long)std::ceil((std::min)({a[1], b[1], c[1]})); y <= (std::max)({a[1], b[1], c[1]}); ++y) {
+        const Uv p{double(x), double(y)};
+        const double l0 = cross(MU::internal::minus(b, p), MU::internal::minus(c, p)) / det;
+        const double l1 = cross(MU::internal::minus(c, p), MU::internal::minus(a, p)) / det;
+        const double l2 = 1 - l0 - l1;
+        if(l0 < 0 || l1 < 0 || l2 < 0) continue;
+        const int zeros = (l0 == 0) + (l1 == 0) + (l2 == 0);
+        if(zeros >= 2) continue;   // a corner: counted with the vertices
+        if(zeros == 1) {   // on an edge: once per surface edge and point
+          const int i = l0 == 0 ? 1 : l1 == 0 ? 2 : 0;   // the edge opposite the zero
+          std::size_t u = mesh.simplices[k][i], w = mesh.simplices[k][(i + 1) % 3];
+          if(u > w) std::swap(u, w);
+          if(!edge_points.insert({(long long)u, (long long)w, x, y}).second) continue;
+        }
+        ++g.in_inverted;
+      }
+  }
+  g.singular = g.at_vertices + g.in_inverted;
+  return g;
+}
+
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                      Run_record* record)
 {
@@ -687,17 +750,18 @@ std::vector<int> reference_orientations(const Mesh_file& mesh)
 
 std::vector<bool> boundary_vertices(const Mesh_file& mesh)
 {
+  // (number_of_vertices(): a per-corner map has no per-vertex map)
   if(has_cells(mesh)) {
     const std::vector<char> b = mesh.cell_size == 4
-      ? MU::internal::cell_boundary_vertices<2>(mesh.map.size(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.map.size()),
+      ? MU::internal::cell_boundary_vertices<2>(mesh.number_of_vertices(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.number_of_vertices()),
                                                 std::size_t(-1), 4)
-      : MU::internal::cell_boundary_vertices<3>(mesh.map.size(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.map.size()),
+      : MU::internal::cell_boundary_vertices<3>(mesh.number_of_vertices(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.number_of_vertices()),
                                                 std::size_t(-1), 8);
     return std::vector<bool>(b.begin(), b.end());
   }
   const std::vector<char> b = mesh.simplex_size == 3
-    ? MU::internal::boundary_vertices<2>(mesh.map.size(), simplices_of<2>(mesh))
-    : MU::internal::boundary_vertices<3>(mesh.map.size(), simplices_of<3>(mesh));
+    ? MU::internal::boundary_vertices<2>(mesh.number_of_vertices(), simplices_of<2>(mesh))
+    : MU::internal::boundary_vertices<3>(mesh.number_of_vertices(), simplices_of<3>(mesh));
   return std::vector<bool>(b.begin(), b.end());
 }
 

@@ -114,6 +114,21 @@ struct Seam_summary
 /// Throws Invalid_problem when a seam of either is not a transition.
 Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after);
 
+/// The vertices of the integer-grid isolines (the quad mesh a seamless map
+/// defines) that are singular, i.e. whose valence is not 4: an integer point
+/// at a surface vertex whose star turns by other than 2 pi (valence
+/// round(4 x angle sum / 2 pi): 3 at a cone of 3 pi / 2, 2 at one of pi), and
+/// every integer point inside or on an edge of a triangle that is not
+/// positive in its chart (the quads there turn over).  A locally injective
+/// map has exactly its cones (on integer points) as singular vertices.
+struct Grid_singularities
+{
+  std::size_t singular = 0;            ///< all of the below
+  std::size_t at_vertices = 0;         ///< integer points at surface vertices of valence other than 4
+  std::size_t in_inverted = 0;         ///< integer points in (or on the edges of) non-positive triangles
+};
+Grid_singularities integer_grid_singularities(const Mesh_file& mesh);
+
 /// Local invertibility of `mesh.map` relative to the orientation of the rest
 /// (or regular, all positive) targets.
 struct Verdict
