@@ -227,9 +227,11 @@ bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
   const std::size_t n = in.number_of_mesh_vertices();
   // (a seam is no boundary: the surface's is that of the representatives' elements)
-  const std::vector<char> on_boundary = in.has_cells()
-    ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
-    : boundary_vertices<d>(n, elements_of_representatives(in.links, in.elements), in.number_of_mesh_elements());
+  const std::vector<char> on_boundary =
+    in.has_cells() ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
+    : in.has_links() ? boundary_vertices<d>(n, elements_of_representatives(in.links, in.elements),
+                                            in.number_of_mesh_elements())
+                     : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
   return false;
@@ -399,11 +401,14 @@ void sort_elements_by_colour(Untangling_problem<d>& P)
 
 /// The scaling `Target_scaling::AUTOMATIC` stands for on `in`: targets as
 /// given when some are given and a boundary vertex is free (the map's size
-/// is then the free boundary's to choose), else matched to the map's volume.
+/// is then the free boundary's to choose), else, and always for a seamless
+/// parameterization, matched to the map's volume.
 template <int d>
 Target_scaling resolved_target_scaling(const Untangling_input<d>& in, Target_scaling scaling)
 {
   if(scaling != Target_scaling::AUTOMATIC) return scaling;
+  // (the uv scale of a seamless parameterization is its seams' translations)
+  if(in.has_links()) return Target_scaling::MATCH_MAP_VOLUME;
   return (in.targets.empty() || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME
                                                                   : Target_scaling::AS_GIVEN;
 }
