@@ -13,9 +13,10 @@ trap 'echo "make_figures.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=${BUILD_DIR:-$ROOT/build}
 FIG=$ROOT/doc/Mesh_untangling/fig
-cmake --build "$BUILD" -j "${JOBS:-2}" --target untangle_mesh_cli figure_tool > /dev/null
+cmake --build "$BUILD" -j "${JOBS:-2}" --target untangle_mesh_cli figure_tool make_tangled_mesh > /dev/null
 UNTANGLE=$BUILD/bin/untangle_mesh
 TOOL=$BUILD/bin/figure_tool
+MAKE=$BUILD/bin/make_tangled_mesh
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK"
@@ -59,6 +60,11 @@ for run in input published default; do
   "$TOOL" cut "$mesh" 1.03 "rotated cavities, cut z = 1.03, $run" "cavities_$run.svg" > /dev/null
 done
 
+# 4. A seamless parameterization: a cube with one chart per face (8 cones of
+#    3 pi / 2), the uv of half of the vertices off the seams moved by up to
+#    1.5 cells, untangled with its seams kept.
+"$MAKE" seamcube 6 1.5 3 seamcube.obj > /dev/null
+untangle 0 seamcube.obj -o seamcube-untangled.obj --svg-input seams_cube_input.svg --svg seams_cube_result.svg
 for svg in *.svg; do
   size=$(stat -c %s "$svg")
   if [ "$size" -ge 102400 ]; then

@@ -49,6 +49,7 @@ struct Arguments
   std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto";
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
+  std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
   bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
@@ -165,7 +166,7 @@ Mesh_file read_problem(const Arguments& args)
     project_surface_on_best_fit_plane(mesh);
     return mesh;
   }
-  if(ext == ".obj" && mesh.map_dimension == 0)
+  if(ext == ".obj" && mesh.map_dimension == 0 && !mesh.has_corner_map())
     throw Usage_error(args.input + ": no texture coordinates (vt): an OBJ input holds the domain in v and the map in vt");
   if(mesh.simplex_size == 0 && mesh.cell_size == 0)
     throw Usage_error(args.input + ": no triangle, tetrahedron, quadrilateral or hexahedron");
@@ -602,6 +603,140 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                  "could be built); %s holds the vertices only\n", args.phantoms.c_str());
 }
 
+/// The JSON report of a seamless parameterization: what applies of the
+/// simplex report, and the seams.
+void write_seamless_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
+                           const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& before,
+                           const Verdict& v, const Seam_summary& seams, const Grid_singularities& grid_before,
+                           const Grid_singularities& grid_after)
+{
+  nlohmann::ordered_json j;
+  j["input"] = args.input;
+  j["output"] = args.output;
+  j["fixed"] = fixed_source;
+  j["element_type"] = "triangles (seamless parameterization of a surface)";
+  j["surface_vertices"] = mesh.rest.size();
+  j["wedges"] = r.number_of_vertices;
+  j["elements"] = r.number_of_elements;
+  j["fixed_wedges"] = r.number_of_fixed_vertices;
+  j["seams"] = args.seams;
+  j["seam_edges"] = seams.seam_edges;
+  j["cones"] = seams.cones;
+  j["seams_kept"] = seams.same_seams;
+  j["max_translation_change"] = seams.max_translation_change;
+  j["max_seam_side_gap"] = seams.max_side_gap;
+  j["integer_grid_singular_vertices_before"] = grid_before.singular;
+  j["integer_grid_singular_vertices_after"] = grid_after.singular;
+  j["integer_grid_singular_at_vertices_after"] = grid_after.at_vertices;
+  j["integer_grid_points_in_inverted_before"] = grid_before.in_inverted;
+  j["phantom_protection"] = false;
+  j["solver"] = r.solver;
+  j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
+  j["status"] = MU::to_string(r.status);
+  j["locally_invertible"] = v.locally_invertible;
+  j["inverted_before"] = before.inverted;
+  j["inverted_after"] = v.inverted;
+  j["overwound_vertices_before"] = before.overwound_vertices;
+  j["overwound_vertices"] = v.overwound_vertices;
+  j["input_defects"] = v.input_defects;
+  j["input_defect_stars"] = v.input_defect_stars;
+  j["min_covering"] = v.min_covering;
+  j["max_covering"] = v.max_covering;
+  j["max_boundary_covering"] = v.max_boundary_covering;
+  j["min_scaled_det_before"] = r.min_scaled_det_before;
+  j["min_scaled_det_after"] = r.min_scaled_det_after;
+  j["max_shape_distortion"] = r.max_shape_distortion;
+  j["mean_shape_distortion"] = r.mean_shape_distortion;
+  j["final_energy"] = r.final_energy;
+  j["final_epsilon"] = r.final_epsilon;
+  j["input_returned"] = r.input_returned;
+  j["outer_iterations"] = r.outer_iterations;
+  j["inner_iterations"] = r.inner_iterations;
+  j["energy_evaluations"] = r.energy_evaluations;
+  j["seconds"] = r.seconds;
+  out << j.dump(2) << "\n";
+}
+
+/// A seamless parameterization (an OBJ with seams): the surface's map, per
+/// corner, written back in the same OBJ layout; the verdict is the surface's.
+int run_seamless(const Arguments& args, Mesh_file& mesh)
+{
+  if(!args.rest.empty()) throw Usage_error("--rest: the rest of a seamless parameterization is its surface (v lines)");
+  if(args.init != "given") throw Usage_error("--init project: " + args.input + " has its map (vt with seams)");
+  if(args.refine) throw Usage_error("--refine is not offered for seamless parameterizations (OBJ with seams)");
+  if(!args.phantoms.empty())
+    throw Usage_error(args.phantoms + ": no phantom element protects a seamless parameterization (see the manual)");
+  if(args.continuation == "always")
+    throw Usage_error("--continuation always: a seamless parameterization has no rest shape in the plane");
+  check_output_paths(args);
+  if(lowercase_extension(args.output) != ".obj")
+    throw Usage_error(args.output + ": a seamless parameterization (one vt per wedge) is written as .obj only");
+  Run run;
+  run.fixed.assign(mesh.rest.size(), false);
+  run.fixed_source = "none (cones are, with --seams keep-translations)";
+  if(!args.fixed.empty()) {
+    for(std::size_t v : IO::read_handles(args.fixed, mesh.rest.size())) run.fixed[v] = true;
+    run.fixed_source = args.fixed;
+  } else if(args.fix_boundary) {
+    run.fixed = boundary_vertices(mesh);
+    run.fixed_source = "boundary";
+  }
+  check_pictures(args, mesh);
+  IO::internal::Output_files files;
+  const Temporary_outputs to = reserve_outputs(args, files);
+  const Verdict before = check_mesh_file(mesh, run.fixed);
+  if(!args.svg_input.empty()) {
+    run.input_picture = svg_map_of(mesh, run.fixed);
+    run.input_picture->title = args.input + " (input)";
+  }
+  const Mesh_file given = mesh;
+  const Grid_singularities grid_before = integer_grid_singularities(mesh);
+  std::unique_ptr<Progress_display> display;
+  if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
+  Run_options options = run_options(args, display.get());
+  options.seam_translations =
+    args.seams == "free-translations" ? MU::Seam_translations::FREE : MU::Seam_translations::KEEP;
+  run.result = untangle_mesh_file(mesh, run.fixed, options, &run.record);
+  display.reset();
+
+  write_for(args.output, [&] { IO::write_mesh_file(to.output, mesh); });
+  Mesh_file written = IO::read_mesh_file(to.output);   // the verdict on the coordinates as written
+  const Verdict verdict = check_mesh_file(written, run.fixed);
+  const Seam_summary seams = compare_seams(given, written);
+  const Grid_singularities grid_after = integer_grid_singularities(written);
+  if(!args.svg_input.empty())
+    write_text_file(args.svg_input, to.svg_input, [&](std::ostream& out) { write_svg(out, *run.input_picture); });
+  if(!args.svg.empty()) {
+    Svg_map picture = svg_map_of(written, run.fixed);
+    picture.title = args.output + " (result, as written)";
+    write_text_file(args.svg, to.svg, [&](std::ostream& out) { write_svg(out, picture); });
+  }
+  if(!args.report.empty())
+    write_text_file(args.report, to.report, [&](std::ostream& out) {
+      write_seamless_report(out, args, run.fixed_source, mesh, run.result, before, verdict, seams, grid_before,
+                            grid_after);
+    });
+  files.commit();
+  if(!args.quiet) {
+    const std::string verdict_text = verdict.locally_invertible ? "locally invertible"
+                                     : "NOT locally invertible (" + reason_stopped(run.result.status) + ")";
+    std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu -> %zu, input defects %zu, %.2f s\n",
+                 verdict_text.c_str(), before.inverted, verdict.inverted, before.overwound_vertices,
+                 verdict.overwound_vertices, verdict.input_defects, run.result.seconds);
+    std::fprintf(stderr, "seams: %zu seam edges, %zu cones, %s; translations moved by at most %.3g, seam sides apart "
+                 "by at most %.3g\n", seams.seam_edges, seams.cones,
+                 seams.same_seams ? "the same seams and rotations" : "SEAMS CHANGED", seams.max_translation_change,
+                 seams.max_side_gap);
+    std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)\n",
+                 grid_before.singular, grid_after.singular, grid_after.at_vertices);
+    if(!verdict.locally_invertible)
+      std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
+                                                                   : run.result.message.c_str());
+  }
+  if(verdict.locally_invertible) return 0;
+  return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
+}
+
 int run(const Arguments& args)
 {
   if(args.output.empty()) throw Usage_error("no output file");
@@ -609,6 +744,9 @@ int run(const Arguments& args)
     throw Usage_error("--fixed and --fix-boundary exclude each other");
 
   Mesh_file mesh = read_problem(args);
+  if(mesh.has_corner_map()) return run_seamless(args, mesh);
+  if(args.seams != "keep-translations")
+    throw Usage_error("--seams " + args.seams + ": " + args.input + " has no seams (an OBJ whose vt differ at a vertex)");
   if(args.refine && mesh.cell_size != 0)
     throw Usage_error("--refine splits the edges of simplices; " + args.input + " holds " + element_kind(mesh));
   check_output_paths(args);
@@ -711,6 +849,10 @@ int main(int argc, char** argv)
                "output with the point fields parent_a and parent_b (-1 for the input's vertices)");
   app.add_option("--refine-budget", args.refine_budget, "largest number of vertices --refine may add (default 64)")
     ->check(whole_number_from_1)->needs(refine);
+  app.add_option("--seams", args.seams, "an OBJ with seams (a seamless parameterization: one vt per wedge) keeps "
+                 "the rotation of every seam transition, and its translation ('keep-translations', the default; cones "
+                 "stay) or not ('free-translations')")
+    ->check(CLI::IsMember({"keep-translations", "free-translations"}));
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");

@@ -14,6 +14,7 @@
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
 #include <CGAL/Mesh_untangling/internal/mesh_type_traits.h>
 #include <CGAL/Mesh_untangling/internal/named_parameters.h>
+#include <CGAL/Mesh_untangling/internal/seams/Seamless_face_graph_adaptor.h>
 #include <CGAL/Mesh_untangling/internal/triangulation_adaptors.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -83,7 +84,8 @@ namespace CGAL {
 /// \pre `tm` is a triangle mesh.
 template <typename ConcurrencyTag = Parallel_if_available_tag, typename TriangleMesh, typename VertexUVMap,
           typename NamedParameters = parameters::Default_named_parameters,
-          typename = std::enable_if_t<!Mesh_untangling::internal::Is_named_parameters<VertexUVMap>::value>>
+          typename = std::enable_if_t<!Mesh_untangling::internal::Is_named_parameters<VertexUVMap>::value &&
+                                      !Mesh_untangling::internal::is_halfedge_map<TriangleMesh, VertexUVMap>()>>
 Mesh_untangling::Untangling_result
 untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = parameters::default_values())
 {
@@ -109,6 +111,85 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
   return Mesh_untangling::internal::untangle_as_parameters_ask<2, vertex_descriptor, Point_2>(
     input, np, [&](vertex_descriptor v) { return adaptor.index_of(v); },
     [&](std::size_t i) { return adaptor.vertex(i); },
+    [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); },
+    ConcurrencyTag());
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// Untangles a seamless parameterization of a triangle surface: `uv` holds
+/// one uv per corner (per halfedge: `uv[h]` is the uv of `target(h)` in
+/// `face(h)`), so that a vertex on a seam has one uv per wedge (the corners
+/// between two seam edges).  The transition across each seam edge, a
+/// rotation by a multiple of 90 degrees and a translation, is read off the
+/// uv of its two sides; the result keeps every transition exactly (the
+/// rotations always, the translations as `Mesh_untangling::parameters::seam_translations` says),
+/// every triangle positive in its chart, and every vertex's star covering
+/// the angle its transitions prescribe once (2 pi at a regular vertex, the
+/// cone angle at a cone).  The surface's points give each face its target,
+/// its own triangle laid flat.  No phantom elements protect it (see the
+/// user manual, "Seamless Parameterizations"); over-wound vertices are reported.
+///
+/// \tparam ConcurrencyTag as for the vertex uv map overload
+/// \tparam TriangleMesh a model of `FaceListGraph` with triangle faces, an oriented 2-manifold (with or without boundary)
+/// \tparam HalfedgeUVMap a read-write property map halfedge -> `Point_2`, holding the initial map; receives the result
+///
+/// `Untangling_result::overwound_vertices_after` and the vertex numbers in
+/// `Untangling_result::message` count wedges.  A seam whose sides are not
+/// related by such a transition (within 1e-6 of the uv's extent), an edge
+/// of a seam with no length in uv, or transitions around a vertex that do
+/// not close give `Untangling_status::INVALID_INPUT`, the message naming
+/// the edge (its vertices' numbers in `vertices(tm)` order) and faces.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the surface}
+///     \cgalParamType{a readable property map vertex -> `Point_3`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed vertices: the uv of all their corners is never written}
+///     \cgalParamType{a readable property map vertex -> `bool`}
+///     \cgalParamDefault{no vertex is fixed (cones are, with translations kept)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::seam_translations}
+///     \cgalParamDescription{whether the translations across seams are kept}
+///     \cgalParamType{`Mesh_untangling::Seam_translations`}
+///     \cgalParamDefault{`Seam_translations::KEEP`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback, theta, solver}
+///     \cgalParamDescription{as for the vertex uv map overload}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename TriangleMesh, typename HalfedgeUVMap,
+          typename NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<Mesh_untangling::internal::is_halfedge_map<TriangleMesh, HalfedgeUVMap>()>,
+          typename = void>
+Mesh_untangling::Untangling_result
+untangle_mesh(TriangleMesh& tm, HalfedgeUVMap uv, const NamedParameters& np = parameters::default_values())
+{
+  static_assert(!Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>(),
+                "Mesh_untangling::parameters::refinement is offered by CGAL::untangle_simplex_soup only");
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto surface = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                        get_const_property_map(vertex_point, tm));
+  const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                      Static_boolean_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, false>());
+  const auto translations = choose_parameter(get_parameter(np, internal_np::mesh_untangling_seam_translations),
+                                             Mesh_untangling::Seam_translations::KEEP);
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
+
+  Mesh_untangling::internal::Seamless_face_graph_adaptor<TriangleMesh> adaptor(tm);
+  auto input = adaptor.make_input(uv, surface, fixed, translations);
+  if(!adaptor.error().empty()) {
+    Mesh_untangling::Untangling_result invalid;
+    invalid.message = adaptor.error();
+    return invalid;
+  }
+  return Mesh_untangling::internal::untangle_as_parameters_ask<2, vertex_descriptor, Point_2>(
+    input, np, [](vertex_descriptor) { return std::size_t(-1); },   // (no phantoms: nothing to look up)
+    [&](std::size_t w) { return adaptor.vertex(w); },
     [&](const Mesh_untangling::internal::Untangling_input<2>& result) { adaptor.write_back(result, uv); },
     ConcurrencyTag());
 }

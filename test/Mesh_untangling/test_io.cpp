@@ -647,9 +647,21 @@ void test_format_details()
 void test_obj_errors()
 {
   const std::string head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 5 5\n"; // 9 lines
-  CHECK_READ_ERROR(read_obj, "seam.obj", head + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", 11,
-                   "vertex 2 has two different texture coordinates (vt 2 and vt 5): per-corner texture coordinates "
-                   "(seams) are not supported");
+  // Seams are read (the map per corner), but their two sides must be related
+  // by a rotation by a multiple of 90 degrees and a translation: the edge
+  // (1, 2) (0-based) is sqrt 2 long in face 0 and sqrt 41 in face 1.
+  CHECK_READ_ERROR(read_obj, "seam.obj", head + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", 10,
+                   "seam edge (1, 2) between faces 0 and 1: its two sides in uv (lengths 1.414214 and 6.403124) are not "
+                   "related by a rotation by a multiple of 90 degrees and a translation (vertex and face numbers 0-based)");
+  CHECK_READ_ERROR(read_obj, "seam-quads.obj", head + "f 1/1 2/2 4/4 3/3\nf 1/1 2/5 4/4 3/3\n", 10,
+                   "seams (a vertex with two different texture coordinates) are supported on triangles only");
+  {
+    // a seam that is a transition (a translation by (2, 0)): the map per corner, written back the same
+    const Mesh_file seam = IO::read_OBJ(write_text("good-seam.obj", head + "vt 3 0\nvt 2 1\n"
+                                                                    "f 1/1 2/2 3/3\nf 2/6 4/4 3/7\n"));
+    CHECK(seam.has_corner_map() && seam.map.empty() && seam.map_dimension == 0 && seam.corner_map.size() == 7);
+    CHECK((seam.simplex_corner_map[1] == std::array<std::size_t, 4>{5, 3, 6, 0}));
+  }
   CHECK_READ_ERROR(read_obj, "pentagon.obj", head + "f 1/1 2/2 4/4 3/3 1/1\n", 10,
                    "face with 5 vertices; only triangles (3) and quadrilaterals (4) are supported");
   CHECK_READ_ERROR(read_obj, "mixed-kinds.obj", head + "f 1/1 2/2 4/4 3/3\nf 1/1 2/2 3/3\n", 11,

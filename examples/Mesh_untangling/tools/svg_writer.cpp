@@ -246,6 +246,12 @@ Marks find_marks(const Svg_map& map, Svg_counts& counts)
     m.inverted[k] = MU::simplex_orientation<2>(map.positions, map.triangles[k]) * reference <= 0;
     counts.inverted += m.inverted[k];
   }
+  if(!map.seam_edges.empty()) {   // a cut surface: its seams are no boundary
+    m.local.overwound_vertex_ids = map.surface_overwound;
+    m.covering.assign(map.positions.size(), 0.);
+    counts.overwound_vertices = map.surface_overwound_vertices;
+    return m;
+  }
   m.local = MU::check_local_invertibility<2>(map.positions, map.triangles, map.reference_orientation, map.is_fixed);
   m.covering = MU::vertex_covering_numbers_2(map.positions, map.triangles, map.reference_orientation);
   counts.overwound_vertices = m.local.overwound_vertex_ids.size();
@@ -262,7 +268,9 @@ void title_lines(std::ostream& out, const Svg_map& map, const Svg_counts& counts
                         " inverted (red), " +
                         counted(counts.overwound_vertices, "over-wound vertex", "over-wound vertices") +
                         " (circled), " +
-                        counted(counts.boundary_intersections, "boundary crossing", "boundary crossings") + " (x)";
+                        (map.seam_edges.empty()
+                           ? counted(counts.boundary_intersections, "boundary crossing", "boundary crossings") + " (x)"
+                           : counted(map.seam_edges.size() / 2, "seam edge", "seam edges") + " (blue)");
   if(!map.overlay.empty()) summary += ", " + counted(counts.overlay, "phantom", "phantoms") + " (dashed)";
   if(marks.local.input_defects > 0) summary += ", " + counted(marks.local.input_defects, "input defect", "input defects");
   const std::string text_style = "font-family=\"sans-serif\" font-size=\"14\"";
@@ -324,6 +332,7 @@ void overwound_vertices(std::ostream& out, const Svg_map& map, const Frame& fram
     const Point q = frame(map.positions[v]);
     out << "<circle class=\"overwound\" cx=\"" << q[0] << "\" cy=\"" << q[1] << "\" r=\"7\" fill=\"none\" stroke=\""
         << overwound_colour << "\" stroke-width=\"2\"/>";
+    if(!map.seam_edges.empty()) { out << "\n"; continue; }   // (the surface's winding is not the cut's)
     out << "<text x=\"" << q[0] + 9 << "\" y=\"" << q[1] - 6 << "\">";
     if(on_boundary[v]) out << marks.covering[v];
     else out << std::lround(marks.covering[v]);
@@ -368,6 +377,14 @@ Svg_counts write_svg(std::ostream& out, const Svg_map& map)
   triangles(out, map, frame, marks.inverted);
   const auto boundary_edges = MU::boundary_facets<3>(map.triangles);
   boundary_lines(out, map, frame, boundary_edges);
+  if(!map.seam_edges.empty()) {
+    out << "<g class=\"seams\" stroke=\"#2166ac\" stroke-width=\"2.5\" stroke-linecap=\"round\">\n";
+    for(const auto& e : map.seam_edges) {
+      const Point a = frame(map.positions[e[0]]), b = frame(map.positions[e[1]]);
+      out << "<line class=\"seam\" x1=\"" << a[0] << "\" y1=\"" << a[1] << "\" x2=\"" << b[0] << "\" y2=\"" << b[1] << "\"/>\n";
+    }
+    out << "</g>\n";
+  }
   if(!map.overlay.empty()) {
     out << "<g class=\"overlay\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\" stroke-dasharray=\"4 3\">\n";
     for(const auto& t : map.overlay) polygon(out, frame, map.positions, t, "class=\"phantom\"");

@@ -39,6 +39,14 @@ struct Svg_map
   std::vector<std::array<std::size_t, 3>> overlay;
   /// first words of the title line (e.g. the file name); the counts follow
   std::string title;
+  /// A seamless parameterization cut along its seams: the edges of both
+  /// sides of every seam (drawn blue).  When given, the picture's boundary
+  /// is the cut's: stars and crossings are not judged on it, and the
+  /// over-wound vertices circled are `surface_overwound` (the surface's
+  /// verdict, given by the caller).
+  std::vector<std::array<std::size_t, 2>> seam_edges;
+  std::vector<std::size_t> surface_overwound;
+  std::size_t surface_overwound_vertices = 0;   ///< the count in the title: vertices of the surface, not points
 };
 
 /// What the picture shows, as counted by the writer.

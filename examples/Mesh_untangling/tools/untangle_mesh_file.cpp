@@ -6,14 +6,20 @@
 #include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
+#include <CGAL/Mesh_untangling/seamless_invertibility.h>
 #include <CGAL/Mesh_untangling/target_orientations.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/untangle_mesh.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include "seamless_surface.h"
+
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <set>
 #include <type_traits>
 
 namespace Mesh_untangling_tools {
@@ -417,9 +423,175 @@ Boundary_verdict check_boundary(const Mesh_file& mesh)
 
 } // namespace
 
+namespace {
+
+/// A per-corner map must be a triangle surface with its 3D (or 2D) rest.
+void check_seamless_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+{
+  if(mesh.simplex_size != 3 || mesh.simplex_corner_map.size() != mesh.simplices.size())
+    throw Invalid_problem("a per-corner map (seams) needs triangles, each with its corners' texture coordinates");
+  if(mesh.rest.empty())
+    throw Invalid_problem("a seamless parameterization needs its surface (the v lines of the OBJ file)");
+  if(!is_fixed.empty() && is_fixed.size() != mesh.rest.size())
+    throw Invalid_problem("fixed flags for " + std::to_string(is_fixed.size()) + " vertices, the surface has " +
+                          std::to_string(mesh.rest.size()));
+}
+
+Seamless_surface surface_of(const Mesh_file& mesh)
+{
+  try {
+    return make_seamless_surface(mesh);
+  } catch(const std::invalid_argument& e) {
+    throw Invalid_problem(e.what());
+  }
+}
+
+Untangling_result untangle_seamless(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options)
+{
+  check_seamless_shape(mesh, is_fixed);
+  Seamless_surface s = surface_of(mesh);
+  const auto fixed = boost::make_function_property_map<Seamless_surface::Mesh::Vertex_index, bool>(
+    [&is_fixed](Seamless_surface::Mesh::Vertex_index v) { return !is_fixed.empty() && is_fixed[std::size_t(v)]; });
+  std::function<bool(const MU::Untangling_step&)> callback;
+  if(options.progress) callback = [&options](const MU::Untangling_step& st) { options.progress(st); return true; };
+  const auto np = CGAL::parameters::vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
+                    .maximum_running_time(options.max_seconds).callback(callback);
+  const Untangling_result result = CGAL::untangle_mesh(s.mesh, s.uv,
+    MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(2),
+    MU::parameters::solver(options.solver,
+    MU::parameters::seam_translations(options.seam_translations,
+    MU::parameters::progress_callback(options.progress_fraction, np)))));
+  if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
+  read_back_corner_map(s, mesh);
+  return result;
+}
+
+std::vector<std::array<std::size_t, 3>> triangles_of(const Mesh_file& mesh)
+{
+  std::vector<std::array<std::size_t, 3>> t;
+  for(const auto& s : mesh.simplices) t.push_back({s[0], s[1], s[2]});
+  return t;
+}
+
+MU::internal::Seams seams_of(const Mesh_file& mesh)
+{
+  std::vector<MU::internal::Uv> uv;
+  for(const auto& f : mesh.simplex_corner_map)
+    for(int c = 0; c < 3; ++c) uv.push_back({mesh.corner_map[f[c]][0], mesh.corner_map[f[c]][1]});
+  try {
+    return MU::internal::detect_seams(mesh.rest.size(), triangles_of(mesh), uv);
+  } catch(const std::invalid_argument& e) {
+    throw Invalid_problem(e.what());
+  }
+}
+
+} // namespace
+
+Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after)
+{
+  check_seamless_shape(before, {});
+  check_seamless_shape(after, {});
+  const MU::internal::Seams a = seams_of(before), b = seams_of(after);
+  Seam_summary s;
+  s.seam_edges = b.seam_edges.size();
+  s.wedges = b.vertex_of_wedge.size();
+  std::vector<char> cone;
+  MU::internal::link_wedges(b, after.rest.size(), {}, cone);
+  for(char c : cone) s.cones += c ? 1 : 0;
+  s.same_seams = a.seam_edges.size() == b.seam_edges.size();
+  for(std::size_t e = 0; s.same_seams && e < a.seam_edges.size(); ++e) {
+    const auto& x = a.seam_edges[e];
+    const auto& y = b.seam_edges[e];
+    s.same_seams = x.face == y.face && x.corner == y.corner && (x.transition.turns - y.transition.turns) % 4 == 0;
+    s.max_translation_change = (std::max)(s.max_translation_change, MU::internal::norm(MU::internal::minus(
+                                                                        x.transition.translation, y.transition.translation)));
+  }
+  // the sides of every seam edge of `after`, through the transition `before` had
+  for(const auto& e : a.seam_edges) {
+    const auto& f = after.simplices[e.face];
+    const auto& g = after.simplices[e.opposite_face];
+    for(int end = 0; end < 2; ++end) {
+      const int c = (e.corner + end) % 3;
+      const auto& p = after.corner_map[after.simplex_corner_map[e.face][c]];
+      for(int i = 0; i < 3; ++i)
+        if(g[i] == f[c]) {
+          const auto& q = after.corner_map[after.simplex_corner_map[e.opposite_face][i]];
+          const MU::internal::Uv image = e.transition({p[0], p[1]});
+          s.max_side_gap = (std::max)(s.max_side_gap, MU::internal::norm(MU::internal::minus(image, {q[0], q[1]})));
+        }
+    }
+  }
+  return s;
+}
+
+Grid_singularities integer_grid_singularities(const Mesh_file& mesh)
+{
+  check_seamless_shape(mesh, {});
+  Grid_singularities g;
+  const double pi = std::acos(-1.);
+  using Uv = MU::internal::Uv;
+  const auto uv_of = [&](std::size_t k, int i) {
+    const auto& p = mesh.corner_map[mesh.simplex_corner_map[k][i]];
+    return Uv{p[0], p[1]};
+  };
+  const auto cross = [](const Uv& a, const Uv& b) { return a[0] * b[1] - a[1] * b[0]; };
+  const auto is_integer = [](const Uv& p) { return p[0] == std::round(p[0]) && p[1] == std::round(p[1]); };
+  // vertices: the signed angle sums of their corners (the charts differ by rotations, which keep angles)
+  std::vector<double> angle(mesh.rest.size(), 0.);
+  std::vector<char> on_integer(mesh.rest.size(), 0), in_face(mesh.rest.size(), 0);
+  std::vector<int> sign(mesh.simplices.size());
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k) {
+    const Uv a = uv_of(k, 0), b = uv_of(k, 1), c = uv_of(k, 2);
+    const double det = cross(MU::internal::minus(b, a), MU::internal::minus(c, a));
+    sign[k] = det > 0 ? 1 : -1;
+    for(int i = 0; i < 3; ++i) {
+      const Uv p = uv_of(k, i), u = MU::internal::minus(uv_of(k, (i + 1) % 3), p),
+               w = MU::internal::minus(uv_of(k, (i + 2) % 3), p);
+      const std::size_t v = mesh.simplices[k][i];
+      angle[v] += sign[k] * std::atan2(std::abs(cross(u, w)), u[0] * w[0] + u[1] * w[1]);
+      in_face[v] = 1;
+      if(is_integer(p)) on_integer[v] = 1;
+    }
+  }
+  const std::vector<bool> boundary = boundary_vertices(mesh);
+  for(std::size_t v = 0; v < mesh.rest.size(); ++v)
+    if(in_face[v] && on_integer[v] && !boundary[v] && std::lround(4 * angle[v] / (2 * pi)) != 4) ++g.at_vertices;
+  // integer points off the vertices, in or on the edges of non-positive triangles (an edge's point once)
+  std::set<std::array<long long, 4>> edge_points;
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k) {
+    if(sign[k] > 0) continue;
+    const Uv a = uv_of(k, 0), b = uv_of(k, 1), c = uv_of(k, 2);
+    const double det = cross(MU::internal::minus(b, a), MU::internal::minus(c, a));
+    if(det == 0) continue;   // (a flat triangle covers no area: its edges' points are counted by its neighbours)
+    for(long long x = (long long)std::ceil((std::min)({a[0], b[0], c[0]})); x <= (std::max)({a[0], b[0], c[0]}); ++x)
+      for(long long y = (long long)std::ceil((std::min)({a[1], b[1], c[1]})); y <= (std::max)({a[1], b[1], c[1]}); ++y) {
+        const Uv p{double(x), double(y)};
+        const double l0 = cross(MU::internal::minus(b, p), MU::internal::minus(c, p)) / det;
+        const double l1 = cross(MU::internal::minus(c, p), MU::internal::minus(a, p)) / det;
+        const double l2 = 1 - l0 - l1;
+        if(l0 < 0 || l1 < 0 || l2 < 0) continue;
+        const int zeros = (l0 == 0) + (l1 == 0) + (l2 == 0);
+        if(zeros >= 2) continue;   // a corner: counted with the vertices
+        if(zeros == 1) {   // on an edge: once per surface edge and point
+          const int i = l0 == 0 ? 1 : l1 == 0 ? 2 : 0;   // the edge opposite the zero
+          std::size_t u = mesh.simplices[k][i], w = mesh.simplices[k][(i + 1) % 3];
+          if(u > w) std::swap(u, w);
+          if(!edge_points.insert({(long long)u, (long long)w, x, y}).second) continue;
+        }
+        ++g.in_inverted;
+      }
+  }
+  g.singular = g.at_vertices + g.in_inverted;
+  return g;
+}
+
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                      Run_record* record)
 {
+  if(mesh.has_corner_map()) {
+    if(record) *record = Run_record();
+    return untangle_seamless(mesh, is_fixed, options);
+  }
   check_shape(mesh, is_fixed);
   if(has_cells(mesh))
     return mesh.cell_size == 4 ? untangle_cells<2>(mesh, is_fixed, options, record)
@@ -472,6 +644,17 @@ void project_surface_on_best_fit_plane(Mesh_file& mesh)
 
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
+  if(mesh.has_corner_map()) {
+    check_seamless_shape(mesh, is_fixed);
+    const Seamless_surface s = surface_of(mesh);
+    const auto fixed = boost::make_function_property_map<Seamless_surface::Mesh::Vertex_index, bool>(
+      [&is_fixed](Seamless_surface::Mesh::Vertex_index v) { return !is_fixed.empty() && is_fixed[std::size_t(v)]; });
+    try {
+      return verdict_of(MU::check_seamless_parameterization(s.mesh, s.uv, CGAL::parameters::vertex_is_constrained_map(fixed)));
+    } catch(const std::invalid_argument& e) {
+      throw Invalid_problem(e.what());
+    }
+  }
   check_shape(mesh, is_fixed);
   return element_dimension(mesh) == 2 ? check<2>(mesh, is_fixed) : check<3>(mesh, is_fixed);
 }
@@ -484,6 +667,46 @@ Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh)
 
 Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
+  if(mesh.has_corner_map()) {
+    // cut along the seams: one point per texture coordinate, each face on its corners'
+    check_seamless_shape(mesh, is_fixed);
+    Svg_map map;
+    map.positions = points_of<2>(mesh.corner_map);
+    for(const auto& f : mesh.simplex_corner_map) map.triangles.push_back({f[0], f[1], f[2]});
+    for(const auto& t : mesh.simplices) {
+      const auto target = MU::internal::flatten_triangle(mesh.rest[t[0]], mesh.rest[t[1]], mesh.rest[t[2]]);
+      map.targets.push_back({{{target[0][0], target[0][1]}, {target[1][0], target[1][1]}, {target[2][0], target[2][1]}}});
+    }
+    const MU::internal::Seams seams = seams_of(mesh);
+    for(const auto& e : seams.seam_edges)
+      for(std::size_t f : {e.face, e.opposite_face}) {
+        // the edge in face f: its two vertices' corners there
+        const auto& a = mesh.simplices[e.face];
+        const std::size_t u = a[e.corner], w = a[(e.corner + 1) % 3];
+        std::array<std::size_t, 2> edge{0, 0};
+        for(int i = 0; i < 3; ++i) {
+          if(mesh.simplices[f][i] == u) edge[0] = mesh.simplex_corner_map[f][i];
+          if(mesh.simplices[f][i] == w) edge[1] = mesh.simplex_corner_map[f][i];
+        }
+        map.seam_edges.push_back(edge);
+      }
+    // the surface's over-wound vertices, circled at each of their texture coordinates
+    const Seamless_surface s = surface_of(mesh);
+    const auto fixed = boost::make_function_property_map<Seamless_surface::Mesh::Vertex_index, bool>(
+      [&is_fixed](Seamless_surface::Mesh::Vertex_index v) { return !is_fixed.empty() && is_fixed[std::size_t(v)]; });
+    const MU::Invertibility_report report =
+      MU::check_seamless_parameterization(s.mesh, s.uv, CGAL::parameters::vertex_is_constrained_map(fixed));
+    std::vector<char> marked(mesh.corner_map.size(), 0);
+    for(std::size_t k = 0; k < mesh.simplices.size(); ++k)
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t t = mesh.simplex_corner_map[k][i];
+        if(!marked[t] && std::binary_search(report.overwound_vertex_ids.begin(), report.overwound_vertex_ids.end(),
+                                            mesh.simplices[k][i]))
+          marked[t] = 1, map.surface_overwound.push_back(t);
+      }
+    map.surface_overwound_vertices = report.overwound_vertex_ids.size();
+    return map;
+  }
   check_shape(mesh, is_fixed);
   if(mesh.simplex_size != 3) throw Invalid_problem("only 2D maps of triangles can be drawn");
   Svg_map map;
@@ -527,17 +750,18 @@ std::vector<int> reference_orientations(const Mesh_file& mesh)
 
 std::vector<bool> boundary_vertices(const Mesh_file& mesh)
 {
+  // (number_of_vertices(): a per-corner map has no per-vertex map)
   if(has_cells(mesh)) {
     const std::vector<char> b = mesh.cell_size == 4
-      ? MU::internal::cell_boundary_vertices<2>(mesh.map.size(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.map.size()),
+      ? MU::internal::cell_boundary_vertices<2>(mesh.number_of_vertices(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.number_of_vertices()),
                                                 std::size_t(-1), 4)
-      : MU::internal::cell_boundary_vertices<3>(mesh.map.size(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.map.size()),
+      : MU::internal::cell_boundary_vertices<3>(mesh.number_of_vertices(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.number_of_vertices()),
                                                 std::size_t(-1), 8);
     return std::vector<bool>(b.begin(), b.end());
   }
   const std::vector<char> b = mesh.simplex_size == 3
-    ? MU::internal::boundary_vertices<2>(mesh.map.size(), simplices_of<2>(mesh))
-    : MU::internal::boundary_vertices<3>(mesh.map.size(), simplices_of<3>(mesh));
+    ? MU::internal::boundary_vertices<2>(mesh.number_of_vertices(), simplices_of<2>(mesh))
+    : MU::internal::boundary_vertices<3>(mesh.number_of_vertices(), simplices_of<3>(mesh));
   return std::vector<bool>(b.begin(), b.end());
 }
 

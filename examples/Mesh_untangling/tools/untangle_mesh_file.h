@@ -49,6 +49,8 @@ struct Run_options
   /// fixed connectivity leaves inverted elements (fixed boundary, rest given)
   bool refinement = false;
   std::size_t refinement_budget = CGAL::Mesh_untangling::default_refinement_budget;
+  /// a per-corner map (seams): Mesh_untangling::parameters::seam_translations
+  CGAL::Mesh_untangling::Seam_translations seam_translations = CGAL::Mesh_untangling::Seam_translations::KEEP;
 };
 
 /// The problem does not make sense (names what is wrong).
@@ -83,6 +85,11 @@ struct Run_record
 /// new vertices, free, after the others; their rest at the midpoint of their parents'; split
 /// simplices rewritten in place, their other halves appended): the caller extends `is_fixed`
 /// (with false) before using it on the mesh again.
+/// A per-corner map (`mesh.has_corner_map()`, an OBJ with seams) is a
+/// seamless parameterization of the 3D surface `mesh.rest`: it goes through
+/// the seamless overload of CGAL::untangle_mesh() (a Surface_mesh with a
+/// halfedge uv map) and comes back into `mesh.corner_map`; `is_fixed` is
+/// per surface vertex; no phantom, no refinement, no record of figures.
 /// Throws Invalid_problem.
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                      Run_record* record = nullptr);
@@ -92,6 +99,35 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
 /// projection on the best-fit plane (replacing any map the file had).
 /// Throws Invalid_problem if the mesh has no triangles.
 void project_surface_on_best_fit_plane(Mesh_file& mesh);
+
+/// What the seams of a per-corner map are, and how those of `after` (the
+/// same surface) differ from those of `before`: the largest change of a
+/// translation, whether every rotation is the same, and how far apart the
+/// two sides of a seam edge are through its transition (`before` measured).
+struct Seam_summary
+{
+  std::size_t seam_edges = 0, wedges = 0, cones = 0;
+  bool same_seams = true;              ///< the same seam edges, with the same rotations
+  double max_translation_change = 0;   ///< uv units
+  double max_side_gap = 0;             ///< in `after`, uv units
+};
+/// Throws Invalid_problem when a seam of either is not a transition.
+Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after);
+
+/// The vertices of the integer-grid isolines (the quad mesh a seamless map
+/// defines) that are singular, i.e. whose valence is not 4: an integer point
+/// at a surface vertex whose star turns by other than 2 pi (valence
+/// round(4 x angle sum / 2 pi): 3 at a cone of 3 pi / 2, 2 at one of pi), and
+/// every integer point inside or on an edge of a triangle that is not
+/// positive in its chart (the quads there turn over).  A locally injective
+/// map has exactly its cones (on integer points) as singular vertices.
+struct Grid_singularities
+{
+  std::size_t singular = 0;            ///< all of the below
+  std::size_t at_vertices = 0;         ///< integer points at surface vertices of valence other than 4
+  std::size_t in_inverted = 0;         ///< integer points in (or on the edges of) non-positive triangles
+};
+Grid_singularities integer_grid_singularities(const Mesh_file& mesh);
 
 /// Local invertibility of `mesh.map` relative to the orientation of the rest
 /// (or regular, all positive) targets.
@@ -116,6 +152,9 @@ struct Verdict
   std::vector<std::size_t> inverted_cell_ids;   ///< cells with a non-positive corner, input defects included
   double min_scaled_jacobian = 1;               ///< over the cells (Mesh_untangling::scaled_jacobian())
 };
+/// For a per-corner map: the surface's verdict (every triangle positive in its
+/// chart, every vertex's star covering its prescribed angle once), through
+/// CGAL::Mesh_untangling::check_seamless_parameterization(); vertex ids are wedges.
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
 /// Per-element and per-vertex figures of `mesh.map`, the map the run
@@ -158,7 +197,9 @@ struct Boundary_verdict
 Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh);
 
 /// The picture of a 2D map (triangles): its positions, orientations and
-/// targets as the untangler sees them.  Throws Invalid_problem for tetrahedra.
+/// targets as the untangler sees them; a per-corner map is drawn cut along
+/// its seams (one point per texture coordinate), the seams drawn blue and the
+/// surface's over-wound vertices circled.  Throws Invalid_problem for tetrahedra.
 Svg_map svg_map_of(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
 
 /// Adds the phantoms of `record` to `map` (the picture of the map they were

@@ -33,6 +33,7 @@ enum mesh_untangling_progress_callback_t { mesh_untangling_progress_callback };
 enum mesh_untangling_refinement_t { mesh_untangling_refinement };
 enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
+enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -108,6 +109,29 @@ constexpr std::size_t default_continuation_steps = 8;
 /// \ingroup PkgMeshUntanglingRef
 /// Default largest number of eps steps (`number_of_iterations`), all stages together.
 constexpr std::size_t default_number_of_iterations = 5000;
+
+/// \ingroup PkgMeshUntanglingRef
+/// What the untangling of a seamless parameterization (the overload of
+/// `CGAL::untangle_mesh()` with a halfedge uv map) keeps of the transition
+/// across each seam, a rotation by a multiple of 90 degrees and a translation.
+/// The rotations are always kept.
+enum class Seam_translations
+{
+  /// the translations as given (default): an integer-grid map stays one;
+  /// every cone (a vertex whose transitions compose to a rotation) is the
+  /// centre of that rotation, so it stays where it is
+  KEEP,
+  /// each seam's translation is an unknown too: the seams slide along each
+  /// other, cones move
+  FREE
+};
+
+/// \ingroup PkgMeshUntanglingRef
+/// The name of `t` as the command-line tool reads it: "keep-translations" or "free-translations".
+inline std::string to_string(Seam_translations t)
+{
+  return t == Seam_translations::FREE ? "free-translations" : "keep-translations";
+}
 
 /// \ingroup PkgMeshUntanglingRef
 /// Default largest number of vertices the local refinement may add
@@ -192,6 +216,11 @@ CGAL_MESH_UNTANGLING_PARAMETER(progress_callback, mesh_untangling_progress_callb
 /// the connectivity is kept).  Offered by `CGAL::untangle_simplex_soup`,
 /// whose point and simplex ranges then grow (see there).
 CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A `CGAL::Mesh_untangling::Seam_translations`: whether the translations
+/// across seams are kept (default) or free, for the seamless overload of
+/// `CGAL::untangle_mesh()` (halfedge uv map) only.
+CGAL_MESH_UNTANGLING_PARAMETER(seam_translations, mesh_untangling_seam_translations_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// `std::size_t` >= 1: the largest number of vertices the refinement may add
 /// (default `default_refinement_budget`).

@@ -96,6 +96,8 @@ inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
   if(!same_bits(a.map, b.map)) mismatch("the map positions");
   if(a.has_fixed != b.has_fixed) mismatch("whether fixed vertices are listed");
   if(!same_bits(a.fixed, b.fixed)) mismatch("the fixed vertices");
+  if(!same_bits(a.corner_map, b.corner_map)) mismatch("the per-corner map");
+  if(!same_bits(a.simplex_corner_map, b.simplex_corner_map)) mismatch("the corners' texture coordinates");
 }
 
 /// `read(path)` returns a value comparable by `check(first, second)`;

@@ -20,6 +20,11 @@ namespace IO {
 /// `.input` format fills everything. A dimension is 2 when the format is 2D
 /// or every z is exactly 0 (never for tetrahedra or hexahedra), else 3.
 ///
+/// A seamless parameterization (OBJ triangles whose `vt` differ between the
+/// corners of one vertex: seams) keeps its map per corner: `corner_map` is
+/// the list of texture coordinates (z = 0) and `simplex_corner_map[k][i]`
+/// the one of corner i of simplex k; `map` is then empty and `map_dimension` 0.
+///
 /// A mesh holds simplices or cells (quadrilaterals, hexahedra), never both:
 /// readers reject a file that mixes them, naming its line.  Hexahedra are in
 /// VTK's vertex order (MEDIT's is the same): 0 1 2 3 the bottom face, counter-
@@ -40,6 +45,11 @@ struct Mesh_file
   /// empty for a mesh not read from a file. Writers ignore it.
   std::vector<std::size_t> simplex_lines;
   std::vector<std::size_t> cell_lines;                ///< as `simplex_lines`, for the cells
+  std::vector<std::array<double, 3>> corner_map;      ///< per-corner map (seams): texture coordinates, z = 0
+  std::vector<std::array<std::size_t, 4>> simplex_corner_map;  ///< 0-based ids into `corner_map`; 4th entry unused (0)
+
+  /// whether the map is per corner (a seamless parameterization with seams)
+  bool has_corner_map() const { return !simplex_corner_map.empty(); }
 
   /// the number of vertices: that of the rest or of the map, whichever has more
   std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }

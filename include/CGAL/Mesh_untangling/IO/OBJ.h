@@ -16,10 +16,14 @@ namespace IO {
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a triangle or quadrilateral mesh from an OBJ file as in the LIM
 /// benchmark: `v` lines give the rest (parametric domain), per-vertex `vt`
-/// the map.  Triangles go to `simplices`, quadrilaterals to `cells`.
+/// the map.  Triangles go to `simplices`, quadrilaterals to `cells`.  A
+/// triangle mesh with seams (a vertex whose corners have different texture
+/// coordinates) keeps its map per corner (`Mesh_file::corner_map`).
 /// \throws Read_error if the file is missing or malformed, has faces of
-/// another size or of both sizes, or has seams (one vertex with two
-/// different texture coordinates).
+/// another size or of both sizes, has seams on quadrilaterals, or a seam
+/// whose two sides are not related by a rotation by a multiple of 90
+/// degrees and a translation (within 1e-6 of the uv's extent; the message
+/// names the edge and the line of one of its faces).
 inline Mesh_file read_OBJ(const std::string& path)
 {
   return internal::read_or_report_memory(path, [&] {
@@ -42,10 +46,18 @@ inline Mesh_file read_OBJ(const std::string& path)
 /// is inconsistent, or the file cannot be written.
 inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
 {
-  internal::check_for_writing(path, mesh);
+  internal::check_for_writing(path, mesh, true);
   internal::check_faces_only(path, mesh, "OBJ");
-  const bool textured = mesh.rest_dimension != 0 && mesh.map_dimension != 0;
-  if(textured && mesh.map_dimension != 2)
+  const bool per_corner = mesh.has_corner_map();
+  if(per_corner && (mesh.simplex_corner_map.size() != mesh.simplices.size() || !mesh.cells.empty()))
+    throw Write_error(path, "the per-corner map does not match the triangles");
+  for(const auto& f : mesh.simplex_corner_map)
+    for(int c = 0; c < 3; ++c)
+      if(f[c] >= mesh.corner_map.size())
+        throw Write_error(path, "a corner names texture coordinate " + std::to_string(f[c]) + " of " +
+                                  std::to_string(mesh.corner_map.size()));
+  const bool textured = mesh.rest_dimension != 0 && (mesh.map_dimension != 0 || per_corner);
+  if(textured && !per_corner && mesh.map_dimension != 2)
     throw Write_error(path, "OBJ texture coordinates are 2D, but map_dimension is 3");
   const std::vector<std::array<double, 3>>& positions = mesh.rest_dimension != 0 ? mesh.rest : mesh.map;
   internal::Atomic_output_file file(path);
@@ -55,24 +67,25 @@ inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
     internal::write_point(out, p, 3);
     out << '\n';
   }
-  for(std::size_t v = 0; textured && v < mesh.map.size(); ++v) {
+  const std::vector<std::array<double, 3>>& textures = per_corner ? mesh.corner_map : mesh.map;
+  for(std::size_t v = 0; textured && v < textures.size(); ++v) {
     out << "vt ";
-    internal::write_point(out, mesh.map[v], 2);
+    internal::write_point(out, textures[v], 2);
     out << '\n';
   }
-  const auto write_face = [&](const auto& f, int size) {
+  const auto write_face = [&](const auto& f, const auto& t, int size) {
     out << 'f';
     for(int c = 0; c < size; ++c) {
       out << ' ' << f[c] + 1;
       if(textured)
-        out << '/' << f[c] + 1;
+        out << '/' << t[c] + 1;
     }
     out << '\n';
   };
-  for(const std::array<std::size_t, 4>& f : mesh.simplices)
-    write_face(f, 3);
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k)
+    write_face(mesh.simplices[k], per_corner ? mesh.simplex_corner_map[k] : mesh.simplices[k], 3);
   for(const std::array<std::size_t, 8>& f : mesh.cells)
-    write_face(f, 4);
+    write_face(f, f, 4);
   file.commit();
 }
 

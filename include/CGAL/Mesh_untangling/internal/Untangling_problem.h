@@ -4,6 +4,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
 
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/Vertex_links.h>
 #include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
 #include <Eigen/Dense>
@@ -50,6 +51,12 @@ struct Untangling_input
   // (built on stars) do not protect them.
   std::size_t corners_per_cell = 1;
 
+  // Seamless parameterizations: the vertices are the surface's wedges, the
+  // linked ones images of their representative (Vertex_links.h).  Empty
+  // otherwise.  Stars are then judged on the surface (seamless_stars.h),
+  // and neither phantoms, continuation, local repair nor refinement apply.
+  Vertex_links<d> links;
+
   // The last `phantom_elements` elements and `phantom_vertices` positions are
   // phantoms (append_phantom_elements()): they shape the energy, but sizes,
   // scaling and every verdict concern the mesh's own elements only.
@@ -63,6 +70,7 @@ struct Untangling_input
   std::size_t number_of_mesh_vertices() const { return positions.size() - phantom_vertices; }
   std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
   bool has_cells() const { return corners_per_cell > 1; }
+  bool has_links() const { return !links.empty(); }
 };
 
 
@@ -136,6 +144,10 @@ struct Untangling_problem
   std::size_t degenerate_targets_replaced = 0;
   std::size_t number_of_fixed_vertices = 0;
   std::size_t constant_elements = 0;                // all vertices fixed: left out of the energy
+  // Linked vertices (seams) in normalized coordinates; empty: none.  A
+  // linked vertex is free or fixed with its representative, and the
+  // solvers' unknowns are the representatives (Newton_solver's Free_numbering).
+  Vertex_links<d> links;
 
   Vector center = Vector::Zero();
   double scale = 1;
@@ -214,9 +226,12 @@ template <int d>
 bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
   const std::size_t n = in.number_of_mesh_vertices();
-  const std::vector<char> on_boundary = in.has_cells()
-    ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
-    : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
+  // (a seam is no boundary: the surface's is that of the representatives' elements)
+  const std::vector<char> on_boundary =
+    in.has_cells() ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
+    : in.has_links() ? boundary_vertices<d>(n, elements_of_representatives(in.links, in.elements),
+                                            in.number_of_mesh_elements())
+                     : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
   return false;
@@ -287,6 +302,9 @@ void validate_input(const Untangling_input<d>& in)
       throw std::invalid_argument("vertex " + std::to_string(v) + " has a non-finite coordinate");
   if(in.phantom_elements > m || in.phantom_vertices > n)
     throw std::invalid_argument("more phantoms than elements or vertices");
+  validate_links<d>(in.links, n, in.is_fixed);
+  if(in.has_links() && (in.phantom_elements > 0 || in.has_cells()))
+    throw std::invalid_argument("linked vertices (seams) take neither phantoms nor cells");
   const std::size_t mesh_m = in.number_of_mesh_elements(), mesh_n = in.number_of_mesh_vertices();
   auto name = [&](std::size_t k) {
     return k < mesh_m ? "element " + std::to_string(k) : "phantom element " + std::to_string(k - mesh_m);
@@ -354,7 +372,11 @@ void sort_elements_by_colour(Untangling_problem<d>& P)
   std::vector<std::size_t> order;   // new position -> old index
   order.reserve(m);
   for(auto [first, last] : {std::pair(std::size_t(0), P.mesh_elements), std::pair(P.mesh_elements, m)}) {
-    const auto [colour, colours] = colour_elements(P.elements, first, last, P.is_fixed);
+    // linked vertices add into their representative's entries (Newton_solver):
+    // elements sharing a representative must not share a colour
+    const auto [colour, colours] = P.links.empty() ? colour_elements(P.elements, first, last, P.is_fixed)
+                                                   : colour_elements(elements_of_representatives(P.links, P.elements),
+                                                                     first, last, P.is_fixed);
     std::vector<std::size_t> start(colours + 1, 0);
     for(std::size_t c : colour) ++start[c + 1];
     for(std::size_t c = 0; c < colours; ++c) start[c + 1] += start[c];
@@ -379,11 +401,14 @@ void sort_elements_by_colour(Untangling_problem<d>& P)
 
 /// The scaling `Target_scaling::AUTOMATIC` stands for on `in`: targets as
 /// given when some are given and a boundary vertex is free (the map's size
-/// is then the free boundary's to choose), else matched to the map's volume.
+/// is then the free boundary's to choose), else, and always for a seamless
+/// parameterization, matched to the map's volume.
 template <int d>
 Target_scaling resolved_target_scaling(const Untangling_input<d>& in, Target_scaling scaling)
 {
   if(scaling != Target_scaling::AUTOMATIC) return scaling;
+  // (the uv scale of a seamless parameterization is its seams' translations)
+  if(in.has_links()) return Target_scaling::MATCH_MAP_VOLUME;
   return (in.targets.empty() || !has_free_boundary_vertex<d>(in)) ? Target_scaling::MATCH_MAP_VOLUME
                                                                   : Target_scaling::AS_GIVEN;
 }
@@ -608,6 +633,11 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
   hold_vertices_in_no_element(in, P);
   normalize_map(in, P);
+  if(in.has_links()) {
+    P.links = normalized_links<d>(in.links, P.center, P.scale);
+    P.links.finish();
+    apply_links<d>(P.links, P.x.data());   // (the representative's uv wins over a given one that disagrees)
+  }
   {
     std::vector<double> scratch;
     auto targets = oriented_targets<d>(in, degenerate_quality, P, scratch);

@@ -226,7 +226,9 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
   };
   Untangling_result work;
   bool repaired = false;
-  if(r.inverted_after <= local_repair_most_inverted) {
+  // (the regions of the local repair are cut meshes of their own, without
+  // the links of a seamless problem: that gets the patient rerun)
+  if(r.inverted_after <= local_repair_most_inverted && !in.has_links()) {
     repaired = repair_locally<d>(in, within_budget(work), seconds_left(), work);
   } else if(seconds_left() > 0) {
     Untangling_input<d> rerun = in;

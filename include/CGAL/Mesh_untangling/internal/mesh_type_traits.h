@@ -67,6 +67,18 @@ constexpr bool is_plain_tetrahedral_complex()
   return Is_tetrahedral_complex<T>::value && !Is_mesh_complex_3<T>::value && !Is_triangulation_3<T>::value;
 }
 
+/// Whether `Map` is a property map keyed by the halfedges of `Mesh` (a
+/// per-corner uv map: the seamless overload of `untangle_mesh`).
+template <typename Mesh, typename Map, typename = void>
+struct Is_halfedge_map : std::false_type {};
+template <typename Mesh, typename Map>
+struct Is_halfedge_map<Mesh, Map, std::void_t<typename Map::key_type,
+                                              typename boost::graph_traits<Mesh>::halfedge_descriptor>>
+  : std::is_same<typename Map::key_type, typename boost::graph_traits<Mesh>::halfedge_descriptor> {};
+
+template <typename Mesh, typename Map>
+constexpr bool is_halfedge_map() { return Is_halfedge_map<Mesh, Map>::value; }
+
 } // namespace internal
 } // namespace Mesh_untangling
 } // namespace CGAL

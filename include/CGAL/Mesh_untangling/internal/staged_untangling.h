@@ -36,6 +36,7 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   regular.phantom_elements = in.phantom_elements;
   regular.phantom_vertices = in.phantom_vertices;
   regular.corners_per_cell = in.corners_per_cell;
+  regular.links = in.links;
   for(std::size_t k = 0; k < in.elements.size(); ++k) {
     auto t = regular_simplex<d>();
     if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
@@ -64,15 +65,20 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
     if(reach[v] > 0 && !P.is_fixed[v])
       for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
+  if(!P.links.empty()) apply_links<d>(P.links, P.x.data());   // (a linked vertex follows its representative)
 }
 
 /// Writes P's free vertices into `in`, in the user's coordinates; the fixed
-/// ones keep their exact input values.
+/// ones keep their exact input values.  A linked vertex is the image of its
+/// representative in the user's coordinates (one rounding: the transitions
+/// hold to the last bits, whatever drift the solver's steps left).
 template <int d>
 void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>& in)
 {
   for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!P.is_fixed[v]) in.positions[v] = P.to_user(P.point(v));
+    if(!P.is_fixed[v] && !in.links.is_linked(v)) in.positions[v] = P.to_user(P.point(v));
+  for(std::size_t v = 0; v < in.positions.size(); ++v)
+    if(!P.is_fixed[v] && in.links.is_linked(v)) in.positions[v] = in.links.image(v, in.positions[in.links.representative[v]]);
 }
 
 /// Stage 0: the given targets, after the published scheme's trial where

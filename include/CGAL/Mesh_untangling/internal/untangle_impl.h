@@ -69,7 +69,9 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
     const bool nothing_fixed = std::find(in.is_fixed.begin(), in.is_fixed.end(), true) == in.is_fixed.end();
     std::optional<std::vector<Eigen::Vector2d>> start;
     // (the convex embedding is that of a triangulated disk, not of corner triangles)
-    if(nothing_fixed && in.phantom_elements == 0 && !in.has_cells() && leaves_room_for_a_fallback(first, options)) {
+    // (nor that of a cut surface: its seams would come apart)
+    if(nothing_fixed && in.phantom_elements == 0 && !in.has_cells() && !in.has_links() &&
+       leaves_room_for_a_fallback(first, options)) {
       const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
       start = tutte_start(in, P.reference_orientation);
     }
@@ -104,7 +106,8 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
                                     const Protection_request<d>& protection, Phantom_elements<d>* phantoms_used)
 {
   std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest;
-  if(options.continuation != Continuation::NEVER) rest = continuation_start<d>(in);
+  // (the rest of a seamless problem is a 3D surface, not a start in the plane)
+  if(options.continuation != Continuation::NEVER && !in.has_links()) rest = continuation_start<d>(in);
   // With every boundary vertex fixed there is no k-covering trap to avoid,
   // and on such problems (CuboidBlocks) the continuation did not rescue any
   // case the direct untangling failed: AUTOMATIC leaves them to it.
@@ -211,7 +214,7 @@ void validate_stars(const Untangling_input<d>& in)
   if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
-  if(in.has_cells()) return;
+  if(in.has_cells() || in.has_links()) return;   // (a seamless surface's stars: checked where its links are made)
   const Invertibility_report report = check_mesh<d>(in, orientation);
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
@@ -278,10 +281,15 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
     if(in.has_cells() && options.refinement)
       throw std::invalid_argument("refinement splits the edges of simplices: it is not offered for cells");
+    if(in.has_links() && options.refinement)
+      throw std::invalid_argument("refinement is not offered for seamless parameterizations (its new vertices "
+                                  "would need wedges of their own)");
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
     validate_stars<d>(in);
     if(in.has_cells() && requested.supplied)
       throw std::invalid_argument("phantom elements protect vertex stars of simplices, not the corners of cells");
+    if(in.has_links() && requested.supplied)
+      throw std::invalid_argument("phantom elements are not offered for seamless parameterizations");
   } catch(const std::invalid_argument& e) {
     Untangling_result invalid;
     invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
@@ -295,7 +303,9 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   // cells do not form: cells go unprotected (see Untangling_input).
   Protection_request<d> unprotected;
   unprotected.enabled = false;
-  const Protection_request<d>& protection = in.has_cells() ? unprotected : requested;
+  // Nor does a seamless one get them: built on the stars of the cut mesh,
+  // they would protect a wedge's sector as a boundary star (see the manual).
+  const Protection_request<d>& protection = in.has_cells() || in.has_links() ? unprotected : requested;
   Untangling_result r;
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);

@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/invertibility/seamless_stars.h>
 
 #include <algorithm>
 #include <array>
@@ -81,11 +82,24 @@ Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const st
 }
 
 /// The invertibility report on the mesh part of `in`: elements and stars;
-/// for cells, per cell, without stars (their corners form no complex).
+/// for cells, per cell, without stars (their corners form no complex); for
+/// a seamless parameterization, the stars of the surface's vertices
+/// (seamless_stars.h), reported by their representative wedge.
 template <int d>
 Invertibility_report check_mesh(const Untangling_input<d>& in, const std::vector<int>& reference_orientation)
 {
   if(in.has_cells()) return check_mesh_elements<d>(in, reference_orientation);
+  if constexpr(d == 2)
+    if(in.has_links())
+      return check_mesh_part<d>(in, reference_orientation, [&](const auto& positions, const auto& triangles,
+                                                               const auto& orientation, const auto& fixed) {
+        const auto signs = relative_signs<2>(positions, triangles, orientation);
+        const auto only_fixed = elements_with_only_fixed_vertices(triangles, fixed);
+        Invertibility_report report = element_report(signs, only_fixed);
+        check_seamless_stars(positions, triangles, signs, only_fixed, in.links.representative, in.links.angle, report);
+        std::sort(report.overwound_vertex_ids.begin(), report.overwound_vertex_ids.end());
+        return report;
+      });
   return check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
     return check_local_invertibility<d>(arguments...);
   });

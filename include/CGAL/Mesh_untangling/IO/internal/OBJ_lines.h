@@ -14,6 +14,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
+#include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
 
 #include <array>
 #include <cstddef>
@@ -182,9 +183,9 @@ inline void check_OBJ_faces(const Text_file& file, const OBJ_content& content, M
   }
 }
 
-// The map is per vertex: a vertex whose corners name different (u, v) sits
-// on a seam, where one position per vertex cannot represent the map.
-inline void assign_OBJ_texture(const Text_file& file, const OBJ_content& content, const OBJ_face& face, int c,
+// The map is per vertex, unless a vertex's corners name different (u, v):
+// it then sits on a seam (returns true), and the map is per corner.
+inline bool assign_OBJ_texture(const Text_file& file, const OBJ_content& content, const OBJ_face& face, int c,
                                std::vector<std::size_t>& texture_of)
 {
   const std::size_t v = face.vertices[c];
@@ -195,11 +196,53 @@ inline void assign_OBJ_texture(const Text_file& file, const OBJ_content& content
     file.fail(face.line, "texture index " + std::to_string(t) + " is out of range "
                              + index_range(content.textures.size(), 1));
   std::size_t& assigned = texture_of[v - 1];
-  if(assigned != 0 && assigned != t && content.textures[assigned - 1] != content.textures[t - 1])
-    file.fail(face.line, "vertex " + std::to_string(v) + " has two different texture coordinates (vt "
-                             + std::to_string(assigned) + " and vt " + std::to_string(t)
-                             + "): per-corner texture coordinates (seams) are not supported");
-  assigned = t;
+  const bool seam = assigned != 0 && assigned != t && content.textures[assigned - 1] != content.textures[t - 1];
+  if(assigned == 0) assigned = t;
+  return seam;
+}
+
+// Seams: every corner keeps its own texture coordinate, and the seams must
+// be transitions of a seamless parameterization (detect_seams, link_wedges:
+// a bad one is named with its face's line).  A texture coordinate shared by
+// corners of two wedges would be written back with one of their uv only.
+inline void build_OBJ_corner_map(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
+{
+  const OBJ_face& first = content.faces.front();
+  if(first.size != 3)
+    file.fail(first.line, "seams (a vertex with two different texture coordinates) are supported on triangles only");
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<CGAL::Mesh_untangling::internal::Uv> corner_uv;
+  for(const OBJ_face& face : content.faces) {
+    triangles.push_back({face.vertices[0] - 1, face.vertices[1] - 1, face.vertices[2] - 1});
+    mesh.simplex_corner_map.push_back({face.textures[0] - 1, face.textures[1] - 1, face.textures[2] - 1, 0});
+    for(int c = 0; c < 3; ++c) {
+      const auto& t = content.textures[face.textures[c] - 1];
+      corner_uv.push_back({t[0], t[1]});
+    }
+  }
+  namespace core = CGAL::Mesh_untangling::internal;
+  try {
+    const core::Seams seams = core::detect_seams(content.positions.size(), triangles, corner_uv);
+    std::vector<char> cone;
+    core::link_wedges(seams, content.positions.size(), {}, cone);
+    std::vector<std::size_t> wedge_of_texture(content.textures.size(), std::size_t(-1));
+    for(std::size_t c = 0; c < 3 * triangles.size(); ++c) {
+      std::size_t& w = wedge_of_texture[content.faces[c / 3].textures[c % 3] - 1];
+      const std::size_t wedge = seams.wedge_of_corner[c];
+      if(w != std::size_t(-1) && w != wedge)
+        file.fail(content.faces[c / 3].line, "vt " + std::to_string(content.faces[c / 3].textures[c % 3]) +
+                                                 " is used by corners of two wedges (of vertices " +
+                                                 std::to_string(seams.vertex_of_wedge[w] + 1) + " and " +
+                                                 std::to_string(seams.vertex_of_wedge[wedge] + 1) +
+                                                 "): each side of a seam needs its own texture coordinates");
+      w = wedge;
+    }
+  } catch(const core::Seam_error& e) {
+    // (the message's numbers are 0-based; the file's are 1-based: name the line)
+    file.fail(content.faces[e.face].line, std::string(e.what()) + " (vertex and face numbers 0-based)");
+  }
+  mesh.corner_map.reserve(content.textures.size());
+  for(const auto& t : content.textures) mesh.corner_map.push_back({t[0], t[1], 0.});
 }
 
 inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
@@ -211,9 +254,18 @@ inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mes
   if(!any_texture)
     return;
   std::vector<std::size_t> texture_of(content.positions.size(), 0);
+  bool seams = false;
   for(const OBJ_face& face : content.faces)
     for(std::size_t c = 0; c < face.size; ++c)
-      assign_OBJ_texture(file, content, face, int(c), texture_of);
+      seams = assign_OBJ_texture(file, content, face, int(c), texture_of) || seams;
+  for(std::size_t v = 0; seams && v < texture_of.size(); ++v)
+    if(texture_of[v] == 0)
+      file.fail(content.position_lines[v], "vertex " + std::to_string(v + 1)
+                                               + " has no texture coordinate (it is in no face)");
+  if(seams) {
+    build_OBJ_corner_map(file, content, mesh);
+    return;
+  }
   mesh.map.reserve(texture_of.size());
   for(std::size_t v = 0; v < texture_of.size(); ++v) {
     if(texture_of[v] == 0)

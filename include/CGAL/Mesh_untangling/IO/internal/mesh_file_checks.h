@@ -70,8 +70,11 @@ inline void check_cells(const std::string& path, const Mesh_file& mesh)
   }
 }
 
-inline void check_for_writing(const std::string& path, const Mesh_file& mesh)
+inline void check_for_writing(const std::string& path, const Mesh_file& mesh, bool per_corner_map_allowed = false)
 {
+  // (one position per vertex cannot hold a seam: only OBJ writes such a map)
+  if(mesh.has_corner_map() && !per_corner_map_allowed)
+    throw Write_error(path, "a per-corner map (seams) can only be written to OBJ");
   check_geometry(path, mesh.rest, mesh.rest_dimension, "rest");
   check_geometry(path, mesh.map, mesh.map_dimension, "map");
   if(!mesh.rest.empty() && !mesh.map.empty() && mesh.rest.size() != mesh.map.size())

@@ -118,7 +118,9 @@ public:
 };
 #endif
 
-/// The free vertices numbered 0, 1, ... in vertex order (-1 for a fixed vertex).
+/// The free vertices numbered 0, 1, ... in vertex order (-1 for a fixed
+/// vertex); a linked vertex (Vertex_links.h) takes its representative's
+/// number: the representatives are the unknowns.
 struct Free_numbering
 {
   std::vector<int> index;
@@ -128,6 +130,15 @@ struct Free_numbering
   {
     for(std::size_t v = 0; v < is_fixed.size(); ++v)
       if(!is_fixed[v]) index[v] = count++;
+  }
+
+  template <int d>
+  Free_numbering(const std::vector<char>& is_fixed, const Vertex_links<d>& links) : index(is_fixed.size(), -1)
+  {
+    for(std::size_t v = 0; v < is_fixed.size(); ++v)
+      if(!is_fixed[v] && !links.is_linked(v)) index[v] = count++;
+    for(std::size_t v = 0; v < is_fixed.size(); ++v)
+      if(links.is_linked(v)) index[v] = index[links.representative[v]];
   }
 };
 
@@ -142,12 +153,17 @@ std::vector<std::vector<int>> lower_vertex_graph(const Untangling_problem<d>& P,
   for_each_vertex_chunk(P.number_of_vertices, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t v = first; v < last; ++v) {
       const int j = free.index[v];
-      if(j < 0) continue;
+      if(j < 0 || P.links.is_linked(v)) continue;
       std::vector<int>& r = rows[j];
       r.push_back(j);
-      for(std::size_t s = stars.begin(v); s < stars.end(v); ++s)
-        for(std::size_t a : P.elements[stars.elements[s]])
-          if(free.index[a] > j) r.push_back(free.index[a]);
+      const auto add_star = [&](std::size_t u) {
+        for(std::size_t s = stars.begin(u); s < stars.end(u); ++s)
+          for(std::size_t a : P.elements[stars.elements[s]])
+            if(free.index[a] > j) r.push_back(free.index[a]);
+      };
+      if(P.links.empty()) add_star(v);
+      else   // the representative's row holds the stars of its whole group
+        for(std::size_t i = P.links.member_start[v]; i < P.links.member_start[v + 1]; ++i) add_star(P.links.members[i]);
       std::sort(r.begin(), r.end());
       r.erase(std::unique(r.begin(), r.end()), r.end());
     }
@@ -165,7 +181,7 @@ template <int d>
 class Hessian_pattern
 {
 public:
-  explicit Hessian_pattern(const Untangling_problem<d>& P) : free_(P.is_fixed)
+  explicit Hessian_pattern(const Untangling_problem<d>& P) : free_(P.is_fixed, P.links)
   {
     const int free_count = free_.count;
     // every diagonal block is stored, even that of a free vertex in no
@@ -275,7 +291,7 @@ template <int d>
 double predicted_factorization_flops(const Untangling_problem<d>& P)
 {
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-  const Free_numbering free(P.is_fixed);
+  const Free_numbering free(P.is_fixed, P.links);
   if(free.count == 0) return 0;
   const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
   // the compressed columns written directly: each column's rows are sorted already
@@ -555,7 +571,7 @@ public:
       }
 
       const bool refresh = ++since_factorization >= steps_per_factorization && !last;
-      scatter_to_vertices(direction, P.number_of_vertices, w.vertex_direction);
+      scatter_to_vertices(P, direction, w.vertex_direction);
       const double bound = non_positive == 0
                              ? step_keeping_orientation(P, P.x.data(), w.vertex_direction.data(), 1.)
                              : std::numeric_limits<double>::infinity();
@@ -612,8 +628,11 @@ public:
     for_each_chunk(P.number_of_vertices, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
       for(std::size_t v = begin; v < end; ++v) {
         const int f = pattern_.free_index(v);
-        if(f >= 0)
+        if(f < 0 || P.links.is_linked(v)) continue;
+        if(P.links.empty())
           for(int c = 0; c < d; ++c) g[d * f + c] = vertex_gradient_[d * v + c];
+        else   // the derivative along the representative: its group's, folded
+          g.template segment<d>(d * f) = folded_gradient<d>(P.links, v, vertex_gradient_.data());
       }
     });
     return F;
@@ -679,7 +698,7 @@ public:
           added[i] = replaces ? now - cached[i] : now;
           cached[i] = now;
         }
-      add_element_hessian(k, added);
+      add_element_hessian(P, k, added);
       key.J = J;
       key.D = D;
       key.valid = true;
@@ -708,13 +727,18 @@ private:
     bool derivatives_at_trial = false;   // Step_workspace::g_trial holds the gradient at the trial point
   };
 
-  /// The step direction of the free unknowns, per vertex (zero on fixed ones).
-  void scatter_to_vertices(const Eigen::VectorXd& direction, std::size_t number_of_vertices,
+  /// The step direction of the free unknowns, per vertex (zero on fixed
+  /// ones; a linked vertex turns its representative's: the step keeps the links).
+  void scatter_to_vertices(const Untangling_problem<d>& P, const Eigen::VectorXd& direction,
                            std::vector<double>& vertex_direction) const
   {
-    for(std::size_t v = 0; v < number_of_vertices; ++v) {
+    for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
       const int f = pattern_.free_index(v);
       for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
+      if(f >= 0 && P.links.is_linked(v)) {
+        Eigen::Map<Eigen::Matrix<double, d, 1>> step(&vertex_direction[d * v]);
+        step = quarter_turns(P.links.turns[v], Eigen::Matrix<double, d, 1>(step));
+      }
     }
   }
 
@@ -870,8 +894,9 @@ private:
   }
 
   /// Adds the packed lower triangle of an element's vertex Hessian (see
-  /// update_hessian) to H, block by block.
-  void add_element_hessian(std::size_t k, const Packed_hessian& lower)
+  /// update_hessian) to H, block by block; the block of linked vertices
+  /// a, b goes to their representatives as Q_a^T B Q_b.
+  void add_element_hessian(const Untangling_problem<d>& P, std::size_t k, const Packed_hessian& lower)
   {
     auto entry = [&lower](int row, int col) { return lower[packed_index(row, col)]; };
     Eigen::Matrix<double, d, d> block;
@@ -880,6 +905,13 @@ private:
         for(int c = 0; c < d; ++c)
           for(int r = 0; r < d; ++r)   // (a diagonal block mirrors its lower triangle)
             block(r, c) = a > b || r >= c ? entry(d * a + r, d * b + c) : entry(d * a + c, d * b + r);
+        if(!P.links.empty()) {
+          const int turns_a = P.links.turns[P.elements[k][a]], turns_b = P.links.turns[P.elements[k][b]];
+          for(int c = 0; c < d; ++c)
+            block.col(c) = quarter_turns(-turns_a, Eigen::Matrix<double, d, 1>(block.col(c)));
+          for(int r = 0; r < d; ++r)   // (B Q_b)^T = Q_b^T B^T
+            block.row(r) = quarter_turns(-turns_b, Eigen::Matrix<double, d, 1>(block.row(r).transpose())).transpose();
+        }
         pattern_.add(k, a, b, block);
       }
   }

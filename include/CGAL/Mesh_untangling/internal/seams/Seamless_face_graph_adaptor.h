@@ -1,0 +1,129 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Front end of a seamless parameterization: a triangle FaceGraph whose uv is
+// per corner (a halfedge map: uv[h] is the uv of target(h) in face(h)).
+// Its unknowns are wedges (seam_layout.h); the rest shape is the surface
+// itself, each face's target its own triangle laid flat.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAMLESS_FACE_GRAPH_ADAPTOR_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAMLESS_FACE_GRAPH_ADAPTOR_H
+
+#include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/front_ends.h>
+#include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <typename TriangleMesh>
+class Seamless_face_graph_adaptor
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+
+public:
+  explicit Seamless_face_graph_adaptor(TriangleMesh& tm) : tm_(tm), vertices_(tm) {}
+
+  const std::string& error() const { return error_; }
+  std::size_t number_of_seam_edges() const { return seams_.seam_edges.size(); }
+  std::size_t number_of_cones() const { return cones_; }
+  /// the mesh vertex of the solver's vertex (a wedge) `w`
+  vertex_descriptor vertex(std::size_t w) const { return vertices_.vertex(seams_.vertex_of_wedge[w]); }
+  /// the position of that vertex in `vertices(tm)`
+  std::size_t vertex_index(std::size_t w) const { return seams_.vertex_of_wedge[w]; }
+
+  /// The wedges, their links and the flattened faces; `error()` says why
+  /// when the seams cannot be (the input is then empty).
+  template <typename HalfedgeUVMap, typename DomainMap, typename FixedMap>
+  Untangling_input<2> make_input(const HalfedgeUVMap& uv, const DomainMap& domain, const FixedMap& fixed,
+                                 Seam_translations translations)
+  {
+    Untangling_input<2> in;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<Uv> corner_uv;
+    std::size_t face_number = 0;
+    for(auto f : faces(tm_)) {
+      if(degree(f, tm_) != 3) {
+        error_ = "face " + std::to_string(face_number) + " is not a triangle";
+        return in;
+      }
+      std::array<std::size_t, 3> t;
+      std::array<typename boost::property_traits<DomainMap>::value_type, 3> corners;
+      int k = 0;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) {
+        corners[k] = get(domain, target(h, tm_));
+        t[k++] = vertices_.index_of(target(h, tm_));
+        const auto p = get(uv, h);
+        corner_uv.push_back(Uv{CGAL::to_double(p[0]), CGAL::to_double(p[1])});
+        halfedges_.push_back(h);
+      }
+      triangles.push_back(t);
+      in.targets.push_back(flatten_triangle(corners[0], corners[1], corners[2]));
+      ++face_number;
+    }
+    const std::size_t n = num_vertices(tm_);
+    try {
+      seams_ = detect_seams(n, triangles, corner_uv);
+      std::vector<char> cone;
+      const Wedge_links links = link_wedges(seams_, n, rest_angle_sums(triangles, in.targets, n), cone);
+      for(std::size_t w = 0; w < links.representative.size(); ++w) {
+        in.links.representative.push_back(links.representative[w]);
+        in.links.turns.push_back(links.turns[w]);
+        in.links.translation.push_back(Eigen::Vector2d(links.translation[w][0], links.translation[w][1]));
+        in.links.angle.push_back(links.angle[w]);
+      }
+      if(translations == Seam_translations::FREE)
+        throw std::invalid_argument("free seam translations are not implemented yet: use Seam_translations::KEEP");
+      for(char c : cone) cones_ += c ? 1 : 0;
+      for(std::size_t w = 0; w < seams_.vertex_of_wedge.size(); ++w) {
+        const std::size_t v = seams_.vertex_of_wedge[w];
+        in.positions.push_back(Eigen::Vector2d(seams_.wedge_uv[w][0], seams_.wedge_uv[w][1]));
+        // a cone is the centre of its holonomy's rotation: with the
+        // translations kept it cannot move (seam_layout.h, link_wedges)
+        in.is_fixed.push_back(get(fixed, vertices_.vertex(v)) || cone[v]);
+      }
+      for(std::size_t w = 0; w < in.positions.size(); ++w)   // the representatives' uv win (to the last bits)
+        if(in.links.is_linked(w)) in.positions[w] = in.links.image(w, in.positions[in.links.representative[w]]);
+    } catch(const std::invalid_argument& e) {
+      error_ = e.what();
+      return Untangling_input<2>();
+    }
+    in.elements.resize(triangles.size());
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+      for(int i = 0; i < 3; ++i) in.elements[f][i] = seams_.wedge_of_corner[3 * f + i];
+    return in;
+  }
+
+  /// Every corner's uv: its wedge's.
+  template <typename HalfedgeUVMap>
+  void write_back(const Untangling_input<2>& in, HalfedgeUVMap& uv) const
+  {
+    using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
+    for(std::size_t c = 0; c < halfedges_.size(); ++c) {
+      const Eigen::Vector2d& p = in.positions[seams_.wedge_of_corner[c]];
+      put(uv, halfedges_[c], Point_2(p[0], p[1]));
+    }
+  }
+
+private:
+  TriangleMesh& tm_;
+  Face_graph_adaptor<TriangleMesh> vertices_;   // (its vertex numbering only)
+  std::vector<halfedge_descriptor> halfedges_;  // per corner 3 f + i, f in faces(tm) order
+  Seams seams_;
+  std::size_t cones_ = 0;
+  std::string error_;
+};
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAMLESS_FACE_GRAPH_ADAPTOR_H

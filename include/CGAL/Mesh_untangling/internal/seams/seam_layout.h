@@ -1,0 +1,322 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// From per-corner uv (a seamless parameterization with seams) to wedges and
+// their links: which corners of a vertex share a uv (its wedges), the
+// transition across each seam edge (a rotation by a multiple of 90 degrees
+// and a translation), and each wedge as the image of its vertex's
+// representative wedge.  No numerics beyond that; readers use it to name
+// the file line of a bad seam, the front end to make the links
+// (Vertex_links.h).  Plain C++17 (the file-format layer includes it).
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAM_LAYOUT_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAM_LAYOUT_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+using Uv = std::array<double, 2>;
+
+inline Uv plus(const Uv& a, const Uv& b) { return {a[0] + b[0], a[1] + b[1]}; }
+inline Uv minus(const Uv& a, const Uv& b) { return {a[0] - b[0], a[1] - b[1]}; }
+inline double norm(const Uv& a) { return std::hypot(a[0], a[1]); }
+
+/// Q^k p, Q the counterclockwise quarter turn (exact: swaps and signs).
+inline Uv turned(int k, const Uv& p)
+{
+  switch(((k % 4) + 4) % 4) {
+    case 1: return {-p[1], p[0]};
+    case 2: return {-p[0], -p[1]};
+    case 3: return {p[1], -p[0]};
+    default: return p;
+  }
+}
+
+/// A seam that cannot be: `face` (0-based) is one of the faces whose sides
+/// disagree, so that a reader can name its line.
+struct Seam_error : std::invalid_argument
+{
+  std::size_t face;
+  Seam_error(std::size_t f, const std::string& what) : std::invalid_argument(what), face(f) {}
+};
+
+/// uv' = Q^turns uv + translation: from one side of a seam edge to the other.
+struct Seam_transition
+{
+  int turns = 0;
+  Uv translation{0., 0.};
+
+  Uv operator()(const Uv& p) const { return plus(turned(turns, p), translation); }
+  Seam_transition inverse() const { return {-turns, turned(-turns, Uv{-translation[0], -translation[1]})}; }
+  /// this after `first`
+  Seam_transition after(const Seam_transition& first) const
+  {
+    return {turns + first.turns, plus(turned(turns, first.translation), translation)};
+  }
+};
+
+/// What detect_seams() finds on a triangle surface with per-corner uv.
+struct Seams
+{
+  std::vector<std::size_t> wedge_of_corner;       // corner 3 f + i -> wedge
+  std::vector<std::size_t> vertex_of_wedge;
+  std::vector<Uv> wedge_uv;                       // the uv of the wedge's first corner
+  struct Edge { std::size_t face, opposite_face; int corner; Seam_transition transition; };
+  std::vector<Edge> seam_edges;                   // corner: of the edge's first vertex in `face`
+  std::vector<char> vertex_on_boundary;           // per vertex
+  double tolerance = 0;                           // absolute, in uv units
+};
+
+inline std::string edge_name(std::size_t a, std::size_t b)
+{
+  return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
+}
+
+/// Wedges and seam transitions of `triangles` (vertex ids, counterclockwise
+/// on an oriented surface) with uv `corner_uv[3 f + i]`.  Two faces sharing
+/// an edge are on one chart there when their uv at both ends agree within
+/// `relative_tolerance` of the uv's extent; else the edge is a seam, whose
+/// sides must be related by a rotation by a multiple of 90 degrees and a
+/// translation within that tolerance.  Throws Seam_error naming the edge and
+/// faces when they are not, when an edge has no length in uv (its rotation
+/// is then unknown), or when an edge is shared by more than two faces or by
+/// two faces of opposite orientations.
+inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 3>>& triangles,
+                          const std::vector<Uv>& corner_uv, double relative_tolerance = 1e-6)
+{
+  const std::size_t m = triangles.size();
+  if(corner_uv.size() != 3 * m)
+    throw std::invalid_argument(std::to_string(corner_uv.size()) + " corner uv for " + std::to_string(m) + " triangles");
+  Seams seams;
+  Uv lo{0., 0.}, hi = lo;
+  for(std::size_t c = 0; c < corner_uv.size(); ++c) {
+    if(!std::isfinite(corner_uv[c][0]) || !std::isfinite(corner_uv[c][1]))
+      throw Seam_error(c / 3, "face " + std::to_string(c / 3) + " has a non-finite uv");
+    for(int i = 0; i < 2; ++i) {
+      lo[i] = c ? (std::min)(lo[i], corner_uv[c][i]) : corner_uv[c][i];
+      hi[i] = c ? (std::max)(hi[i], corner_uv[c][i]) : corner_uv[c][i];
+    }
+  }
+  const double extent = (std::max)(hi[0] - lo[0], hi[1] - lo[1]);
+  seams.tolerance = relative_tolerance * (extent > 0 ? extent : 1.);
+  const double tolerance = seams.tolerance;
+
+  // directed edge (a, b) -> corner of a in its face
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> directed;
+  for(std::size_t f = 0; f < m; ++f)
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
+      if(a >= number_of_vertices || b >= number_of_vertices)
+        throw Seam_error(f, "face " + std::to_string(f) + " refers to a vertex out of range");
+      if(!directed.emplace(std::make_pair(a, b), 3 * f + i).second)
+        throw Seam_error(f, "edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
+                              std::to_string(directed[{a, b}] / 3) + " and " + std::to_string(f) +
+                              "): the surface is not manifold or not consistently oriented");
+    }
+
+  std::vector<std::size_t> parent(3 * m);   // union-find over corners: one class per wedge
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto find = [&](std::size_t c) {
+    while(parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  };
+  seams.vertex_on_boundary.assign(number_of_vertices, 0);
+  for(const auto& [edge, c] : directed) {
+    const auto [a, b] = edge;
+    const auto twin = directed.find({b, a});
+    if(twin == directed.end()) { seams.vertex_on_boundary[a] = seams.vertex_on_boundary[b] = 1; continue; }
+    if(a > b) continue;   // each interior edge once
+    const std::size_t f = c / 3, g = twin->second / 3;
+    const std::size_t ca = c, cb = 3 * f + (c % 3 + 1) % 3;                 // a, b in f
+    const std::size_t gb = twin->second, ga = 3 * g + (gb % 3 + 1) % 3;   // b, a in g
+    const Uv ef = minus(corner_uv[cb], corner_uv[ca]), eg = minus(corner_uv[gb], corner_uv[ga]);
+    if((std::max)(norm(ef), norm(eg)) <= 2 * tolerance) {
+      if(norm(minus(corner_uv[ga], corner_uv[ca])) <= tolerance) {   // a collapsed edge, on one chart
+        parent[find(ca)] = find(ga);
+        parent[find(cb)] = find(gb);
+        continue;
+      }
+      throw Seam_error(f, "seam edge " + edge_name(a, b) + " between faces " + std::to_string(f) + " and " +
+                            std::to_string(g) + " has no length in uv: the rotation across it cannot be detected");
+    }
+    int best = 0;
+    double best_error = std::numeric_limits<double>::infinity();
+    for(int k = 0; k < 4; ++k) {
+      const double error = norm(minus(turned(k, ef), eg));
+      if(error < best_error) { best_error = error; best = k; }
+    }
+    Seam_transition t{best, minus(corner_uv[ga], turned(best, corner_uv[ca]))};
+    if(!(best_error <= tolerance))
+      throw Seam_error(f, "seam edge " + edge_name(a, b) + " between faces " + std::to_string(f) + " and " +
+                            std::to_string(g) + ": its two sides in uv (lengths " + std::to_string(norm(ef)) +
+                            " and " + std::to_string(norm(eg)) + ") are not related by a rotation by a "
+                            "multiple of 90 degrees and a translation");
+    if(best == 0 && norm(t.translation) <= tolerance) {   // the same chart on both sides
+      parent[find(ca)] = find(ga);
+      parent[find(cb)] = find(gb);
+      continue;
+    }
+    seams.seam_edges.push_back({f, g, int(ca % 3), t});
+  }
+
+  std::vector<std::size_t> wedge_of_class(3 * m, std::size_t(-1));
+  seams.wedge_of_corner.resize(3 * m);
+  for(std::size_t c = 0; c < 3 * m; ++c) {
+    std::size_t& w = wedge_of_class[find(c)];
+    if(w == std::size_t(-1)) {
+      w = seams.vertex_of_wedge.size();
+      seams.vertex_of_wedge.push_back(triangles[c / 3][c % 3]);
+      seams.wedge_uv.push_back(corner_uv[c]);
+    }
+    seams.wedge_of_corner[c] = w;
+  }
+  return seams;
+}
+
+/// Per surface vertex, the sum of its corner angles in the rest
+/// triangles `targets` (any type whose points have [0] and [1]: flattened
+/// 3D triangles keep the surface's angles).
+template <class Targets>
+std::vector<double> rest_angle_sums(const std::vector<std::array<std::size_t, 3>>& triangles, const Targets& targets,
+                                    std::size_t number_of_vertices)
+{
+  std::vector<double> sum(number_of_vertices, 0.);
+  for(std::size_t f = 0; f < triangles.size() && f < targets.size(); ++f)
+    for(int i = 0; i < 3; ++i) {
+      const auto& p = targets[f][i];
+      const auto& q = targets[f][(i + 1) % 3];
+      const auto& r = targets[f][(i + 2) % 3];
+      const double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
+      sum[triangles[f][i]] += std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+    }
+  return sum;
+}
+
+/// Each wedge as the image of its vertex's representative wedge:
+/// x_w = Q^turns[w] x_representative[w] + translation[w] (Vertex_links.h
+/// holds the same in the solver's terms).
+struct Wedge_links
+{
+  std::vector<std::size_t> representative;
+  std::vector<int> turns;
+  std::vector<Uv> translation;
+  std::vector<double> angle;   // per representative: the angle sum prescribed; -1 on the boundary
+};
+
+/// The links of the wedges of `seams`: per surface vertex, its representative
+/// is the wedge of its first corner (in face order), every other wedge the
+/// image of it by the transitions crossed from there around the vertex.
+/// The holonomy of an interior vertex (the transitions composed once around
+/// it) is a rotation by k quarter turns; its star must cover the angle
+/// k pi / 2 modulo 2 pi, and the angle prescribed (Vertex_links::angle) is
+/// the one of these nearest to the vertex's angle sum on the rest surface
+/// (`rest_angle`, per vertex): 2 pi at a regular vertex, 3 pi / 2 at a cube
+/// corner, pi at a pillow corner.  A vertex whose holonomy is a rotation
+/// (a cone) is the rotation's centre; with translations kept, nothing can
+/// move it: `cone[vertex]` is set.  Throws Seam_error when transitions around
+/// a vertex do not close (a translation left with no rotation), or a cone
+/// is not at its rotation's centre.
+inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertices,
+                               const std::vector<double>& rest_angle, std::vector<char>& cone)
+{
+  const std::size_t n = seams.vertex_of_wedge.size();
+  Wedge_links links;
+  links.representative.assign(n, std::size_t(-1));
+  links.turns.assign(n, 0);
+  links.translation.assign(n, Uv{0., 0.});
+  links.angle.assign(n, -1.);
+  cone.assign(number_of_vertices, 0);
+  // the seam edges as arcs between wedges of one vertex, all in one sense
+  // around it (from the face after the seam to the one before, counterclockwise)
+  struct Arc { std::size_t from, to; Seam_transition t; std::size_t face; };
+  std::vector<std::vector<Arc>> arcs(n);
+  for(const auto& e : seams.seam_edges) {
+    const std::size_t ca = 3 * e.face + e.corner, cb = 3 * e.face + (e.corner + 1) % 3;
+    // in the opposite face g, a follows b
+    std::size_t ga = 0, gb = 0;
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t c = 3 * e.opposite_face + i;
+      if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[ca]]) ga = c;
+      if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[cb]]) gb = c;
+    }
+    const Arc at_a{seams.wedge_of_corner[ca], seams.wedge_of_corner[ga], e.transition, e.face};
+    const Arc at_b{seams.wedge_of_corner[gb], seams.wedge_of_corner[cb], e.transition.inverse(), e.face};
+    for(const Arc& arc : {at_a, at_b}) {
+      arcs[arc.from].push_back(arc);
+      if(arc.to != arc.from) arcs[arc.to].push_back(arc);
+    }
+  }
+  std::vector<std::size_t> first_wedge(number_of_vertices, std::size_t(-1));
+  for(std::size_t w = 0; w < n; ++w)
+    if(first_wedge[seams.vertex_of_wedge[w]] == std::size_t(-1)) first_wedge[seams.vertex_of_wedge[w]] = w;
+  std::vector<int> holonomy(number_of_vertices, 0);
+  std::vector<Seam_transition> transition(n);   // x_w = transition[w](x_representative)
+  std::vector<char> seen(n, 0);
+  for(std::size_t v = 0; v < number_of_vertices; ++v) {
+    const std::size_t root = first_wedge[v];
+    if(root == std::size_t(-1)) continue;
+    std::vector<std::size_t> queue{root};
+    seen[root] = 1;
+    links.representative[root] = root;
+    for(std::size_t q = 0; q < queue.size(); ++q) {
+      const std::size_t u = queue[q];
+      for(const Arc& arc : arcs[u]) {
+        const std::size_t other = arc.from == u ? arc.to : arc.from;
+        const Seam_transition step = arc.from == u ? arc.t : arc.t.inverse();
+        const Seam_transition reached = step.after(transition[u]);
+        if(!seen[other]) {
+          seen[other] = 1;
+          transition[other] = reached;
+          links.representative[other] = root;
+          queue.push_back(other);
+          continue;
+        }
+        if(arc.from != u) continue;   // each closing arc once
+        // the loop root -> u -> other -> root: the holonomy
+        const Seam_transition loop = transition[other].inverse().after(reached);
+        const int turns = ((loop.turns % 4) + 4) % 4;
+        const Uv centre = seams.wedge_uv[root];
+        const double miss = norm(minus(loop(centre), centre));
+        const std::string where = "vertex " + std::to_string(v) + " (face " + std::to_string(arc.face) + ")";
+        if(turns == 0 && miss > 4 * seams.tolerance)
+          throw Seam_error(arc.face, "the seam transitions around " + where + " do not close: a translation of " +
+                                       std::to_string(miss) + " is left after a full turn");
+        if(turns != 0 && miss > 4 * seams.tolerance)
+          throw Seam_error(arc.face, "cone " + where + " is not at the centre of the rotation its seam transitions "
+                                       "make (" + std::to_string(miss) + " away)");
+        if(turns != 0) holonomy[v] = turns;
+        cone[v] = cone[v] || turns != 0;
+      }
+    }
+  }
+  const double quarter = std::acos(-1.) / 2;
+  for(std::size_t w = 0; w < n; ++w) {
+    links.turns[w] = ((transition[w].turns % 4) + 4) % 4;
+    links.translation[w] = transition[w].translation;
+    const std::size_t v = seams.vertex_of_wedge[w];
+    if(links.representative[w] != w || seams.vertex_on_boundary[v]) continue;
+    // the angle congruent to the holonomy nearest to the rest's, at least a quarter turn
+    const double base = holonomy[v] * quarter, rest = v < rest_angle.size() ? rest_angle[v] : 4 * quarter;
+    const long m = std::lround((rest - base) / (4 * quarter));
+    links.angle[w] = (std::max)(base + 4 * quarter * double(m), base > 0 ? base : 4 * quarter);
+  }
+  return links;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAM_LAYOUT_H

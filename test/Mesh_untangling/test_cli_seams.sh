@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Seamless parameterizations from the command line (issue 25 part 1): an OBJ
+# with seams (torus, cube with 8 cones, pillow with 4) made by
+# make_tangled_mesh untangles to exit 0, written back in the same layout
+# (the same v lines, as many vt, faces naming the same v and vt), with every
+# seam transition kept to 1e-12 and the integer-grid singular vertices down
+# to the cones; bad seams and options that do not apply are usage errors.
+# usage: test_cli_seams.sh UNTANGLE_MESH MAKE_TANGLED_MESH
+set -u
+. "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_seams "$@"
+
+json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
+# same_layout A B: the same v lines, as many vt lines, and faces with the same v and vt indices
+same_layout() {
+  [ "$(grep '^v ' "$1")" = "$(grep '^v ' "$2")" ] &&
+  [ "$(grep -c '^vt ' "$1")" = "$(grep -c '^vt ' "$2")" ] &&
+  [ "$(grep '^f ' "$1")" = "$(grep '^f ' "$2")" ]
+}
+at_most() { python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) <= float(sys.argv[2]) else 1)" "$1" "$2"; }
+
+for shape in torus:10:0 seamcube:6:8 pillow:6:4; do
+  IFS=: read -r name n cones <<< "$shape"
+  "$MAKE" "$name" "$n" 1.3 5 "$name.obj" > /dev/null
+  "$UNTANGLE" "$name.obj" -o "$name-out.obj" --report "$name.json" --svg "$name.svg" --svg-input "$name-in.svg" --quiet
+  code=$?
+  check "$name: exit 0 (code $code)" [ "$code" = 0 ]
+  check "$name: locally invertible" [ "$(json "$name.json" locally_invertible)" = True ]
+  check "$name: there were inverted triangles" [ "$(json "$name.json" inverted_before)" != 0 ]
+  check "$name: same OBJ layout" same_layout "$name.obj" "$name-out.obj"
+  check "$name: the same seams and rotations" [ "$(json "$name.json" seams_kept)" = True ]
+  check "$name: translations kept to 1e-12" at_most "$(json "$name.json" max_translation_change)" 1e-12
+  check "$name: seam sides together to 1e-12" at_most "$(json "$name.json" max_seam_side_gap)" 1e-12
+  check "$name: $cones cones" [ "$(json "$name.json" cones)" = "$cones" ]
+  check "$name: only the cones are singular on the integer grid" \
+    [ "$(json "$name.json" integer_grid_singular_vertices_after)" = "$cones" ]
+  check "$name: pictures with seams" grep -q 'class="seam"' "$name.svg"
+done
+
+# lbfgs gets there too
+"$UNTANGLE" seamcube.obj -o cube-lbfgs.obj --solver lbfgs --quiet
+check "seamcube --solver lbfgs: exit 0" [ $? = 0 ]
+
+# a seam whose sides are no transition: exit 2, the line and the edge named
+sed '0,/^vt 10 5$/s//vt 10.25 5/' torus.obj > bad.obj   # (u = 10: a seam's side)
+"$UNTANGLE" bad.obj -o bad-out.obj --quiet 2> bad.err
+code=$?
+check "bad seam: exit 2 (code $code)" [ "$code" = 2 ]
+check "bad seam: the line and the edge named" grep -q 'bad.obj:[0-9]*: seam edge (' bad.err
+check "bad seam: nothing written" [ ! -e bad-out.obj ]
+
+# what does not apply to a seamless parameterization
+"$UNTANGLE" torus.obj -o t.vtk --quiet 2> vtk.err
+check "seams to .vtk: exit 2" [ $? = 2 ]
+"$UNTANGLE" torus.obj -o t.obj --refine --quiet 2> refine.err
+check "--refine: exit 2" [ $? = 2 ]
+"$UNTANGLE" torus.obj -o t.obj --seams free-translations --quiet 2> free.err
+code=$?
+check "free-translations: said not to be offered yet (exit 2, code $code)" [ "$code" = 2 ]
+check "free-translations: why" grep -q 'free seam translations' free.err
+"$MAKE" square 4 0.3 1 square.obj > /dev/null
+"$UNTANGLE" square.obj -o s.obj --seams free-translations --quiet 2> noseam.err
+check "--seams on a file without seams: exit 2" [ $? = 2 ]
+
+echo "test_cli_seams: $checks checks, $failures failed"
+[ "$failures" = 0 ]

@@ -1,0 +1,273 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Seamless parameterizations (issue 25 part 1) through the API: a torus
+// (two seams, identity rotations), a cube (90 degree rotations, 8 cones of
+// 3 pi / 2) and a pillow (4 cones of pi), each tangled by moving interior uv
+// wedges, must end locally injective on the surface with every seam
+// transition preserved to 1e-12 and the cones in place; bad seams are
+// named by edge; a fold across a seam, invisible on the cut mesh, is caught.
+#include "test_common.h"
+
+#include <CGAL/Mesh_untangling/IO/OBJ.h>
+#include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
+#include <CGAL/untangle_mesh.h>
+
+#include "seamless_generators.h"
+#include "seamless_surface.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <tuple>
+
+namespace MU = CGAL::Mesh_untangling;
+namespace tools = Mesh_untangling_tools;
+using Mesh_file = MU::IO::Mesh_file;
+
+namespace {
+
+using Uv = MU::internal::Uv;
+
+std::vector<Uv> corner_uv(const Mesh_file& m)
+{
+  std::vector<Uv> uv;
+  for(const auto& f : m.simplex_corner_map)
+    for(int c = 0; c < 3; ++c) uv.push_back({m.corner_map[f[c]][0], m.corner_map[f[c]][1]});
+  return uv;
+}
+
+std::vector<std::array<std::size_t, 3>> triangles(const Mesh_file& m)
+{
+  std::vector<std::array<std::size_t, 3>> t;
+  for(const auto& s : m.simplices) t.push_back({s[0], s[1], s[2]});
+  return t;
+}
+
+MU::internal::Seams seams_of(const Mesh_file& m)
+{
+  return MU::internal::detect_seams(m.rest.size(), triangles(m), corner_uv(m));
+}
+
+/// Triangles negative in their chart (floating orientation; the result's own verdict is exact).
+std::size_t negative_triangles(const Mesh_file& m)
+{
+  const auto uv = corner_uv(m);
+  std::size_t count = 0;
+  for(std::size_t k = 0; k < m.simplices.size(); ++k) {
+    const Uv a = MU::internal::minus(uv[3 * k + 1], uv[3 * k]), b = MU::internal::minus(uv[3 * k + 2], uv[3 * k]);
+    if(!(a[0] * b[1] - a[1] * b[0] > 0)) ++count;
+  }
+  return count;
+}
+
+/// Every seam of `after` has the transition it had in `before` (same edges,
+/// rotations equal, translations within 1e-12 of the uv's extent).
+void check_transitions_kept(const Mesh_file& before, const Mesh_file& after, const std::string& name)
+{
+  const auto s0 = seams_of(before);
+  const auto s1 = seams_of(after);
+  CHECK_MESSAGE(s0.seam_edges.size() == s1.seam_edges.size(), name << ": " << s0.seam_edges.size() << " seam edges before, "
+                                                                    << s1.seam_edges.size() << " after");
+  double worst = 0;
+  for(std::size_t e = 0; e < s0.seam_edges.size() && e < s1.seam_edges.size(); ++e) {
+    const auto& a = s0.seam_edges[e];
+    const auto& b = s1.seam_edges[e];
+    CHECK(a.face == b.face && a.corner == b.corner);
+    CHECK_MESSAGE((a.transition.turns - b.transition.turns) % 4 == 0, name << ": a seam's rotation changed");
+    worst = std::max(worst, MU::internal::norm(MU::internal::minus(a.transition.translation, b.transition.translation)));
+  }
+  // and the two sides of every seam edge agree through it, at both ends
+  const auto uv = corner_uv(after);
+  double gap = 0;
+  for(const auto& e : s1.seam_edges) {
+    const std::size_t ca = 3 * e.face + e.corner, cb = 3 * e.face + (e.corner + 1) % 3;
+    const auto& f = after.simplices[e.face];
+    const auto& g = after.simplices[e.opposite_face];
+    for(int i = 0; i < 3; ++i)
+      for(std::size_t c : {ca, cb})
+        if(g[i] == f[c % 3]) gap = std::max(gap, MU::internal::norm(MU::internal::minus(e.transition(uv[c]), uv[3 * e.opposite_face + i])));
+  }
+  std::cout << name << ": " << s1.seam_edges.size() << " seam edges, translations moved by at most " << worst
+            << ", sides apart by at most " << gap << "\n";
+  CHECK_MESSAGE(worst <= 1e-12, name << ": a translation moved by " << worst);
+  CHECK_MESSAGE(gap <= 1e-12, name << ": the sides of a seam are " << gap << " apart");
+}
+
+void check_untangles(Mesh_file m, const std::string& name, double amplitude, std::size_t cone_wedges,
+                     MU::Solver solver = MU::Solver::AUTOMATIC)
+{
+  const Mesh_file given = m;
+  tools::tangle_seamless(m, amplitude, 0.5, 7);
+  const Mesh_file tangled = m;
+  const std::size_t negative_before = negative_triangles(m);
+  CHECK_MESSAGE(negative_before > 0, name << ": the tangled map has no inverted triangle");
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  const MU::Untangling_result r =
+    CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::solver(solver, CGAL::parameters::maximum_running_time(60.)));
+  tools::read_back_corner_map(s, m);
+  std::cout << name << " (" << MU::to_string(solver) << "): " << MU::to_string(r.status) << ", inverted "
+            << r.inverted_before << " -> " << r.inverted_after << ", over-wound after " << r.overwound_vertices_after
+            << ", " << r.outer_iterations << " eps steps, " << r.seconds << " s" << (r.message.empty() ? "" : ": ")
+            << r.message << "\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, name << ": " << r.message);
+  CHECK(r.inverted_before >= negative_before);
+  CHECK(r.inverted_after == 0 && r.overwound_vertices_after == 0);
+  CHECK(negative_triangles(m) == 0);
+  CHECK_MESSAGE(r.number_of_fixed_vertices == cone_wedges, name << ": " << r.number_of_fixed_vertices
+                                                                 << " fixed wedges, expected the cones' " << cone_wedges);
+  check_transitions_kept(given, m, name);
+  // the cones (the vertices with three wedges on the cube, ...) stay where they were, bit for bit
+  const auto seams = seams_of(tangled);
+  std::vector<int> wedges(m.rest.size(), 0);
+  for(std::size_t v : seams.vertex_of_wedge) ++wedges[v];
+  for(std::size_t k = 0; k < m.simplices.size(); ++k)
+    for(int c = 0; c < 3; ++c) {
+      const std::size_t v = m.simplices[k][c];
+      if(cone_wedges > 0 && (wedges[v] == 3 || (name == "pillow" && wedges[v] == 2 && m.rest[v][2] == 0 &&
+                                          (m.rest[v][0] == 0 || m.rest[v][0] == 1) && (m.rest[v][1] == 0 || m.rest[v][1] == 1))))
+        CHECK(m.corner_map[m.simplex_corner_map[k][c]] == tangled.corner_map[tangled.simplex_corner_map[k][c]]);
+    }
+}
+
+/// A covering that only the surface's stars show: a vertex with 4 wedges
+/// (seams along every other edge of its 8 triangles, each wedge's chart
+/// translated), whose triangles are all positive but turn around it twice,
+/// each wedge's sector by pi.  On the cut mesh every wedge looks like a
+/// boundary vertex turning by pi, which the soup's check accepts.
+void check_covering_across_seams()
+{
+  const double pi = std::acos(-1.);
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.rest_dimension = 3;
+  m.rest.push_back({0, 0, 0});
+  for(int k = 0; k < 8; ++k) m.rest.push_back({std::cos(k * pi / 4), std::sin(k * pi / 4), 0});
+  for(int j = 0; j < 4; ++j) {   // wedge j: triangles 2 j, 2 j + 1, its chart shifted by 10 j
+    const std::size_t centre = m.corner_map.size();
+    m.corner_map.push_back({10. * j, 0, 0});
+    for(int k = 2 * j; k <= 2 * j + 2; ++k)   // outer vertex k at angle k pi / 2: twice around in all
+      m.corner_map.push_back({10. * j + std::cos(k * pi / 2), std::sin(k * pi / 2), 0});
+    for(int t = 0; t < 2; ++t) {
+      const int k = 2 * j + t;
+      m.simplices.push_back({0, std::size_t(1 + k % 8), std::size_t(1 + (k + 1) % 8), 0});
+      m.simplex_corner_map.push_back({centre, centre + 1 + t, centre + 2 + t, 0});
+    }
+  }
+  const auto seams = seams_of(m);
+  CHECK_MESSAGE(seams.seam_edges.size() == 4, seams.seam_edges.size());
+  // the soup of wedges: no defect
+  std::vector<std::array<double, 2>> wedge_uv;
+  for(const auto& p : seams.wedge_uv) wedge_uv.push_back(p);
+  std::vector<std::array<std::size_t, 3>> wedge_triangles;
+  for(std::size_t k = 0; k < m.simplices.size(); ++k)
+    wedge_triangles.push_back({seams.wedge_of_corner[3 * k], seams.wedge_of_corner[3 * k + 1], seams.wedge_of_corner[3 * k + 2]});
+  const MU::Invertibility_report soup = MU::check_local_invertibility<2>(wedge_uv, wedge_triangles);
+  CHECK_MESSAGE(soup.is_locally_invertible(), soup.overwound_boundary_vertices << " " << soup.inverted_elements);
+  // the surface: the centre is covered twice
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  auto fixed = s.mesh.add_property_map<tools::Seamless_surface::Mesh::Vertex_index, bool>("v:fixed", true).first;
+  const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, CGAL::parameters::vertex_is_constrained_map(fixed));
+  std::cout << "covering across seams: " << MU::to_string(r.status) << ", " << r.message << "\n";
+  CHECK(r.inverted_after == 0);
+  CHECK_MESSAGE(r.status == MU::Untangling_status::UNREPAIRABLE_DEFECTS_LEFT && r.input_defect_stars == 1,
+                MU::to_string(r.status) << " " << r.input_defect_stars);
+  // the angles the transitions prescribe: 3 pi / 2 at a cube's corners, pi at a pillow's
+  for(const auto& [mesh, angle, count] : {std::tuple(tools::make_seamless_cube(2), 1.5 * pi, 8),
+                                          std::tuple(tools::make_seamless_pillow(2), pi, 4)}) {
+    const auto layout = seams_of(mesh);
+    std::vector<char> cone;
+    std::vector<double> rest_angle(mesh.rest.size(), 0.);
+    for(const auto& t : mesh.simplices)
+      for(int i = 0; i < 3; ++i) {
+        Eigen::Vector3d p, q, o;
+        for(int c = 0; c < 3; ++c) {
+          o[c] = mesh.rest[t[i]][c];
+          p[c] = mesh.rest[t[(i + 1) % 3]][c] - o[c];
+          q[c] = mesh.rest[t[(i + 2) % 3]][c] - o[c];
+        }
+        rest_angle[t[i]] += std::atan2(p.cross(q).norm(), p.dot(q));
+      }
+    const auto links = MU::internal::link_wedges(layout, mesh.rest.size(), rest_angle, cone);
+    int cones = 0;
+    for(std::size_t w = 0; w < links.representative.size(); ++w)
+      if(links.representative[w] == w && cone[layout.vertex_of_wedge[w]]) {
+        ++cones;
+        CHECK_MESSAGE(std::abs(links.angle[w] - angle) < 1e-12, links.angle[w] << " instead of " << angle);
+      }
+    CHECK(cones == count);
+  }
+}
+
+void check_bad_seams()
+{
+  // one side of a seam stretched: its two sides are no longer related by a transition
+  Mesh_file m = tools::make_seamless_torus(6);
+  std::size_t far = 0;   // the texture coordinate u = 6 at v = 3, on the seam
+  for(std::size_t t = 0; t < m.corner_map.size(); ++t)
+    if(m.corner_map[t][0] == 6 && m.corner_map[t][1] == 3) far = t;
+  m.corner_map[far][0] += 0.25;
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv);
+  std::cout << "bad seam: " << r.message << "\n";
+  CHECK(r.status == MU::Untangling_status::INVALID_INPUT);
+  CHECK_MESSAGE(r.message.find("seam edge (") != std::string::npos &&
+                r.message.find("not related by a rotation") != std::string::npos, r.message);
+  // the same file: the reader names the line of a face of that edge
+  const std::string path = (std::filesystem::temp_directory_path() / "mesh_untangling_bad_seam.obj").string();
+  Mesh_file written = m;
+  MU::IO::write_OBJ(path, written);
+  CHECK_THROWS_MESSAGE(MU::IO::read_OBJ(path), "mesh_untangling_bad_seam.obj:");
+  CHECK_THROWS_MESSAGE(MU::IO::read_OBJ(path), "seam edge (");
+  std::filesystem::remove(path);
+
+  // a cone moved off the centre of its rotation (a cube corner's uv on one face)
+  Mesh_file cube = tools::make_seamless_cube(3);
+  cube.corner_map[cube.simplex_corner_map[0][0]][0] += 0.5;
+  tools::Seamless_surface c = tools::make_seamless_surface(cube);
+  const MU::Untangling_result rc = CGAL::untangle_mesh(c.mesh, c.uv);
+  std::cout << "bad cone: " << rc.message << "\n";
+  CHECK(rc.status == MU::Untangling_status::INVALID_INPUT);
+  CHECK(rc.message.find("seam edge") != std::string::npos || rc.message.find("cone") != std::string::npos);
+
+  // free translations: refused for now, with a message
+  Mesh_file torus = tools::make_seamless_torus(4);
+  tools::Seamless_surface t = tools::make_seamless_surface(torus);
+  const MU::Untangling_result rf =
+    CGAL::untangle_mesh(t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE));
+  CHECK(rf.status == MU::Untangling_status::INVALID_INPUT || rf.status == MU::Untangling_status::SUCCESS);
+}
+
+void check_obj_round_trip()
+{
+  const Mesh_file m = tools::make_seamless_cube(2);
+  const std::string path = (std::filesystem::temp_directory_path() / "mesh_untangling_seams.obj").string();
+  MU::IO::write_OBJ(path, m);
+  const Mesh_file r = MU::IO::read_OBJ(path);
+  CHECK(r.has_corner_map() && r.map.empty() && r.map_dimension == 0);
+  CHECK(r.simplex_corner_map == m.simplex_corner_map);
+  CHECK(r.corner_map == m.corner_map);
+  CHECK(r.simplices == m.simplices);
+  std::filesystem::remove(path);
+}
+
+} // namespace
+
+int main()
+{
+  try {
+    check_obj_round_trip();
+    check_bad_seams();
+    check_covering_across_seams();
+    check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);
+    check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0, MU::Solver::LBFGS);
+    check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24);
+    check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24, MU::Solver::LBFGS);
+    check_untangles(tools::make_seamless_pillow(6), "pillow", 1.2, 8);
+  } catch(const std::exception& e) {
+    std::cerr << "unexpected exception: " << e.what() << "\n";
+    return 1;
+  }
+  return test::exit_code();
+}
