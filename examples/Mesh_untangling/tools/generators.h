@@ -117,20 +117,16 @@ inline Mesh_file make_quad_surface_grid(std::size_t n, double h = 0.3)
 /// (n+1)^3 vertices on [0,1]^3, n^3 hexahedra (VTK's vertex order); rest = map.
 inline Mesh_file make_hex_cube_grid(std::size_t n)
 {
-  Mesh_file m;
+  Mesh_file m = make_cube_grid(n);   // its vertices, with hexahedra instead of tetrahedra
+  m.simplex_size = 0;
+  m.simplices.clear();
   m.cell_size = 8;
-  m.rest_dimension = m.map_dimension = 3;
   auto id = [n](std::size_t i, std::size_t j, std::size_t k) { return (k * (n + 1) + j) * (n + 1) + i; };
-  for(std::size_t k = 0; k <= n; ++k)
-    for(std::size_t j = 0; j <= n; ++j)
-      for(std::size_t i = 0; i <= n; ++i)
-        m.rest.push_back({double(i) / n, double(j) / n, double(k) / n});
   for(std::size_t k = 0; k < n; ++k)
     for(std::size_t j = 0; j < n; ++j)
       for(std::size_t i = 0; i < n; ++i)
         m.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
                            id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-  m.map = m.rest;
   return m;
 }
 
