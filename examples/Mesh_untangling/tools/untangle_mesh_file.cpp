@@ -112,6 +112,33 @@ auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
   return untangle(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
 }
 
+/// The solver's per-step callback from the tool's progress reporter (none without one).
+std::function<bool(const MU::Untangling_step&)> step_callback(const Run_options& options)
+{
+  if(!options.progress) return {};
+  return [&options](const MU::Untangling_step& step) { options.progress(step); return true; };
+}
+
+/// The named parameters every run of the tool takes from `options`, in two
+/// layers because the package's own parameters take the chain last: CGAL's
+/// (on `chain`: the rest points' or the defaults) with the progress fraction
+/// inside, then `with_theta_and_solver` outside whatever a run adds between.
+template <typename Chain, typename FixedMap>
+auto run_parameters(const Run_options& options, const Chain& chain, const FixedMap& fixed,
+                    const std::function<bool(const MU::Untangling_step&)>& callback)
+{
+  return MU::parameters::progress_callback(options.progress_fraction,
+           chain.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
+                .maximum_running_time(options.max_seconds).callback(callback));
+}
+
+template <typename Inner>
+auto with_theta_and_solver(const Run_options& options, int d, const Inner& inner)
+{
+  return MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(d),
+                               MU::parameters::solver(options.solver, inner));
+}
+
 /// Makes `mesh` the refined mesh of `points` and `simplices` (a run's
 /// result): its new vertices, whose rest is the midpoint of their parents'.
 template <int d>
@@ -142,21 +169,17 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   auto simplices = simplices_of<d>(mesh);
   const auto fixed = boost::make_function_property_map<std::size_t, bool>(
     [&is_fixed](std::size_t v) { return !is_fixed.empty() && is_fixed[v]; });
-  std::function<bool(const MU::Untangling_step&)> callback;
-  if(options.progress) callback = [&options](const MU::Untangling_step& s) { options.progress(s); return true; };
+  const auto callback = step_callback(options);
   std::vector<MU::Phantom_element<std::size_t, Point<d>>> phantoms;
   std::vector<MU::Element_figures> figures;
   std::vector<MU::Added_vertex> added;
 
   const Untangling_result result = with_rest_points<d>(mesh, [&](const auto& rest) {
-    const auto np = rest.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
-                        .maximum_running_time(options.max_seconds).callback(callback);
-    const auto package_np = MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(d),
-                              MU::parameters::solver(options.solver,
+    const auto package_np = with_theta_and_solver(options, d,
                               MU::parameters::phantom_protection(options.phantoms,
                               MU::parameters::continuation(options.continuation,
                               MU::parameters::continuation_steps(options.continuation_steps,
-                              MU::parameters::progress_callback(options.progress_fraction, np))))));
+                              run_parameters(options, rest, fixed, callback)))));
     const auto refining_np = MU::parameters::refinement(options.refinement,
                                MU::parameters::refinement_budget(options.refinement_budget,
                                MU::parameters::added_vertices_output(std::back_inserter(added), package_np)));
@@ -202,17 +225,13 @@ Untangling_result untangle_cells(Mesh_file& mesh, const std::vector<bool>& is_fi
   const auto cells = cells_of<d>(mesh);
   const auto fixed = boost::make_function_property_map<std::size_t, bool>(
     [&is_fixed](std::size_t v) { return !is_fixed.empty() && is_fixed[v]; });
-  std::function<bool(const MU::Untangling_step&)> callback;
-  if(options.progress) callback = [&options](const MU::Untangling_step& s) { options.progress(s); return true; };
+  const auto callback = step_callback(options);
   std::vector<MU::Element_figures> figures;
   const auto run = [&](const auto& rest) {
-    const auto np = rest.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
-                        .maximum_running_time(options.max_seconds).callback(callback);
-    const auto package_np = MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(d),
-                              MU::parameters::solver(options.solver,
+    const auto package_np = with_theta_and_solver(options, d,
                               MU::parameters::continuation(options.continuation,
                               MU::parameters::continuation_steps(options.continuation_steps,
-                              MU::parameters::progress_callback(options.progress_fraction, np)))));
+                              run_parameters(options, rest, fixed, callback))));
     if(!record) return CGAL::untangle_cell_soup(points, cells, package_np);
     return CGAL::untangle_cell_soup(points, cells,
                                     MU::parameters::element_figures_output(std::back_inserter(figures), package_np));
@@ -452,15 +471,11 @@ Untangling_result untangle_seamless(Mesh_file& mesh, const std::vector<bool>& is
   Seamless_surface s = surface_of(mesh);
   const auto fixed = boost::make_function_property_map<Seamless_surface::Mesh::Vertex_index, bool>(
     [&is_fixed](Seamless_surface::Mesh::Vertex_index v) { return !is_fixed.empty() && is_fixed[std::size_t(v)]; });
-  std::function<bool(const MU::Untangling_step&)> callback;
-  if(options.progress) callback = [&options](const MU::Untangling_step& st) { options.progress(st); return true; };
-  const auto np = CGAL::parameters::vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
-                    .maximum_running_time(options.max_seconds).callback(callback);
+  const auto callback = step_callback(options);
   const Untangling_result result = CGAL::untangle_mesh(s.mesh, s.uv,
-    MU::parameters::theta(options.theta ? *options.theta : MU::default_theta(2),
-    MU::parameters::solver(options.solver,
+    with_theta_and_solver(options, 2,
     MU::parameters::seam_translations(options.seam_translations,
-    MU::parameters::progress_callback(options.progress_fraction, np)))));
+    run_parameters(options, CGAL::parameters::default_values(), fixed, callback))));
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   read_back_corner_map(s, mesh);
   return result;
