@@ -5,7 +5,10 @@
 // untangling of a free-boundary problem with a prescribed motion gets a fifth
 // of the eps steps, so that the continuation still has the rest.  Two Kuhn
 // cavities turned by 150° (margin 4): the direct run does not end locally
-// invertible within 40 eps steps; the continuation does within 32.
+// invertible within 40 eps steps; the continuation does within 32.  The
+// direct run's budget of energy evaluations (the same on every machine)
+// stops it with the verdict of what is left, which leaves the continuation
+// its turn.
 // Usage: test_continuation_policy
 
 #include "free_boundary_families.h"
@@ -58,5 +61,17 @@ int main()
   CHECK_MESSAGE(r.continuation_steps > 0, "no continuation step");
   CHECK_MESSAGE(r.outer_iterations <= 40, r.outer_iterations << " eps steps");
   for(std::size_t v : mesh.fixed) CHECK_MESSAGE(in.positions[v] == given[v], "fixed vertex " << v << " moved");
+
+  MI::Untangling_input<3> budgeted = tetrahedral_problem(mesh);
+  MI::Untangling_options direct;
+  direct.max_energy_evaluations = 200;
+  const auto b = MI::untangle_directly<3>(budgeted, direct, MI::Protection_request<3>(), nullptr);
+  std::printf("direct run with 200 energy evaluations: %s, %zu evaluations, %zu eps steps\n",
+              CGAL::Mesh_untangling::to_string(b.status).c_str(), b.energy_evaluations, b.outer_iterations);
+  // (Newton pays for an eps step when it ends: a few dozen evaluations at most)
+  CHECK_MESSAGE(b.energy_evaluations >= 200 && b.energy_evaluations <= 260, b.energy_evaluations << " evaluations");
+  CHECK_MESSAGE(b.status == CGAL::Mesh_untangling::Untangling_status::INVERTED_ELEMENTS_LEFT,
+                CGAL::Mesh_untangling::to_string(b.status));
+  CHECK(MI::leaves_room_for_a_fallback(b, MI::Untangling_options()));
   return test::exit_code();
 }

@@ -262,6 +262,21 @@ static void prescribed_boundary()
   CHECK(stats.regular_boundary_vertices + stats.irregular_boundary_vertices == 0);
   CHECK(ph.extra_vertices.empty());
   CHECK(stats.interior_edges > 0);
+
+  // Built on a valid map (the continuation's steps), the stars of the fixed
+  // boundary are closed too, so that free vertices cannot wrap around it;
+  // its edges, whose fans the fixed faces bound, are still left alone.
+  MI::Phantom_options_3 options;
+  options.protect_fixed_boundaries = true;
+  MI::Phantom_statistics_3 protecting;
+  const auto closed = MI::compute_phantom_tetrahedra(rest, tets, fixed, rest, &protecting, options);
+  check_invariants(rest, tets, fixed, closed, protecting);
+  CHECK(protecting.prescribed_boundary_vertices == 0);
+  CHECK(protecting.regular_boundary_vertices + protecting.irregular_boundary_vertices +
+        protecting.unprotected_boundary_vertices == 6 * n * n + 2);
+  CHECK(protecting.regular_boundary_vertices > 0);
+  CHECK(protecting.prescribed_boundary_edges == protecting.boundary_edges);
+  CHECK(closed.elements.size() > ph.elements.size());
 }
 
 /// The rest orientation of each tetrahedron is its positive one; the order

@@ -89,6 +89,7 @@ struct Eps_loop_outcome
   bool stalled = false;            // the number of inverted elements stopped going down
   bool numerical_failure = false;
   bool stopped = false;            // by the callback or the clock
+  bool evaluations_spent = false;  // Untangling_options::max_energy_evaluations ran out
   double energy = 0, epsilon = 0;
 };
 
@@ -192,10 +193,11 @@ public:
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? polish_tolerance_ : 1e-4)
                : LBFGS_solver<d>(lbfgs_algebra()).minimize(P, eps, theta_, inner_iterations(valid),
-                                                           [this] { return out_of_time() || trial_spent(); });
+                                                           [this] { return out_of_time() || trial_spent() || budget_spent(); });
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
+      if(newton) charge_evaluations(inner.evaluations + 2);   // (L-BFGS pays for each one as it goes)
       ++result_.outer_iterations;
       if(!std::isfinite(E)) { P.x = previous; out.numerical_failure = true; break; }
       summary = determinant_summary(P, P.x.data());
@@ -236,6 +238,7 @@ public:
       if(idle_steps >= stall_patience()) { out.stalled = summary.non_positive > 0; break; }
       eps = next_eps;
       if(out_of_time() || trial_evaluations_left_ == 0) { out.stopped = true; break; }
+      if(evaluations_left_ == 0) { out.evaluations_spent = true; break; }
     }
     return out;
   }
@@ -352,9 +355,21 @@ private:
     return false;
   }
 
+  /// Asked before every evaluation of L-BFGS's inner solves: whether
+  /// max_energy_evaluations is spent (counting this evaluation).
+  bool budget_spent()
+  {
+    if(evaluations_left_ == 0) return true;
+    --evaluations_left_;
+    return false;
+  }
+
+  void charge_evaluations(std::size_t n) { evaluations_left_ -= std::min(evaluations_left_, n); }
+
   static constexpr std::size_t no_trial = std::numeric_limits<std::size_t>::max();
   std::size_t trial_evaluations_left_ = no_trial;
   const Untangling_options& options_;
+  std::size_t evaluations_left_ = options_.max_energy_evaluations;
   const double theta_;
   const double polish_tolerance_;
   Untangling_result& result_;

@@ -25,6 +25,9 @@ struct Untangling_options
   std::size_t max_outer_iterations = default_number_of_iterations;
   int max_inner_iterations = -1;     // < 0: solver default
   double max_seconds = std::numeric_limits<double>::infinity();
+  // A budget that, unlike the clock, gives the same run on any machine: the
+  // direct untangling that a continuation may follow (untangle_impl.h).
+  std::size_t max_energy_evaluations = std::numeric_limits<std::size_t>::max();
   Target_scaling scaling = Target_scaling::AUTOMATIC;
   std::function<bool(const Untangling_step&)> callback;   // false stops the run
   std::function<bool(double)> progress;   // the fraction done (progress.h); false cancels the run

@@ -100,6 +100,18 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
   }
 }
 
+/// The energy evaluations of a 3D direct untangling that a continuation
+/// follows, times its elements (and at least direct_run_least_evaluations).
+/// On the free-boundary stress benchmark (2026-11-26), the successful direct
+/// runs evaluated at most 5.7e7 element energies but one (Kuhn cuboid, two
+/// cavities turned 165°: 2.0e8 in 40 eps steps, 30 s), and the failing ones
+/// 1e8 to 3.7e8 before their 40 s were spent, while the continuation then
+/// untangled them in 2 to 14 s (bars of 49,920 tets twisted 120° and
+/// shifted, Kuhn cavities turned 150° and 180°, a TetGen slab of 47,575
+/// tets twisted 90°).  One evaluation of a 50k-tet problem takes about 7 ms.
+constexpr double direct_run_element_evaluations = 1e8;
+constexpr std::size_t direct_run_least_evaluations = 2000;
+
 /// The run of `untangle` below, whose result may still be worse than its input.
 template <int d>
 Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_options& options,
@@ -130,11 +142,18 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   // the same problems in 2.5-7.3 s.  Successful direct runs of the stress
   // benchmark take at most a few dozen eps steps, but up to 20 s of 60
   // (locked region of 38k tets turned 120°): half the time was too little
-  // on a loaded machine.
+  // on a loaded machine.  In 3D the direct untangling also gets a budget of
+  // work that is the same on every machine, and that bounds it without a
+  // time limit (a failing one went on for 1,000 eps steps): see
+  // direct_run_element_evaluations.
   const auto given = in.positions;
   Untangling_options direct = options;
   direct.max_seconds = options.max_seconds * 2 / 3;
   direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
+  if(d == 3)
+    direct.max_energy_evaluations = std::max<std::size_t>(
+      direct_run_least_evaluations,
+      static_cast<std::size_t>(direct_run_element_evaluations / double(std::max<std::size_t>(in.elements.size(), 1))));
   direct.give_up_on_stall = d == 3 && !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
   Phantom_elements<d> direct_phantoms;
   Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);

@@ -41,7 +41,8 @@ struct Protection_summary
 /// The phantom triangles of the 2D problem `in`, built on its targets (each
 /// target laid flat is the rest shape of its triangle; stars are made flat
 /// around each vertex from their angles).
-inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in, Protection_summary& summary)
+inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in, Protection_summary& summary,
+                                                  bool /* protect_fixed_boundaries: not offered in 2D */ = false)
 {
   Phantom_statistics statistics;
   const auto phantoms = compute_phantom_triangles(in.positions.size(), in.elements, in.targets, in.is_fixed, &statistics);
@@ -54,8 +55,9 @@ inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in,
 /// (`rest_point_map`, `rest_points`) agree at shared vertices and give it;
 /// targets that disagree (per-cell targets, the default regular ones) give
 /// no geometry to build in: then no phantoms are made and every boundary
-/// vertex counts as an incomplete star.
-inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in, Protection_summary& summary)
+/// vertex counts as an incomplete star.  `protect_fixed_boundaries`: see Phantom_options_3.
+inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in, Protection_summary& summary,
+                                                  bool protect_fixed_boundaries = false)
 {
   const std::optional<std::vector<Eigen::Vector3d>> rest = rest_shape<3>(in);
   if(!rest) {
@@ -64,7 +66,10 @@ inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in,
     return Phantom_elements<3>();
   }
   Phantom_statistics_3 statistics;
-  Phantom_elements<3> phantoms = compute_phantom_tetrahedra(*rest, in.elements, in.is_fixed, in.positions, &statistics);
+  Phantom_options_3 options;
+  options.protect_fixed_boundaries = protect_fixed_boundaries;
+  Phantom_elements<3> phantoms = compute_phantom_tetrahedra(*rest, in.elements, in.is_fixed, in.positions, &statistics,
+                                                            options);
   summary.incomplete_stars = statistics.incomplete_stars;
   return phantoms;
 }
@@ -73,7 +78,9 @@ inline Phantom_elements<3> build_phantom_elements(const Untangling_input<3>& in,
 /// when `geometry` is locally invertible, every one of them is positive
 /// there (the paper's remark that any admissible map supports a full set of
 /// phantoms), whereas phantoms built in the rest shape may not be, far from
-/// it.  The targets of the phantoms are their shapes in `geometry`.
+/// it.  The targets of the phantoms are their shapes in `geometry`.  In 3D
+/// they also protect the stars of fixed boundaries (Phantom_options_3),
+/// which rest-built phantoms leave alone.
 template <int d>
 Phantom_elements<d> build_phantom_elements_on(const Untangling_input<d>& in,
                                               const std::vector<Eigen::Matrix<double, d, 1>>& geometry,
@@ -83,7 +90,7 @@ Phantom_elements<d> build_phantom_elements_on(const Untangling_input<d>& in,
   on_geometry.targets.resize(in.elements.size());
   for(std::size_t k = 0; k < in.elements.size(); ++k)
     for(int i = 0; i <= d; ++i) on_geometry.targets[k][i] = geometry[in.elements[k][i]];
-  return build_phantom_elements(on_geometry, summary);
+  return build_phantom_elements(on_geometry, summary, true);
 }
 
 /// Appends the phantoms that `request` calls for to `in` (mesh targets are

@@ -30,11 +30,17 @@
 //     by the tets (p, p*, p_i, p_i+1); the fan around (p, p*) is aggregated.
 //     p* is a new free unknown; its initial map position is the image of
 //     its rest offset through the best affine fit of the map on the star.
-//   - A boundary vertex whose boundary star is all fixed, and a boundary
-//     edge whose two boundary faces are fixed, are left alone: their
-//     boundary cannot fold, and their phantoms would confine free neighbours
-//     to the cone or wedge the fixed faces see (under a large prescribed
-//     motion, like the rotated cavities, that makes the problem infeasible).
+//   - Fixed boundaries.  A boundary vertex whose boundary star is all fixed,
+//     and a boundary edge whose two boundary faces are fixed, are left alone
+//     by default: their boundary cannot fold, and phantoms built in the rest
+//     shape would confine free neighbours to the cone or wedge the fixed
+//     faces see (under a large prescribed motion, like the rotated
+//     cavities, that makes the problem infeasible).  Their stars can still
+//     wind twice, the free vertices wrapping around the fixed wall: at a
+//     cube cavity's corner turned 165° the star covered 1.875 spheres with
+//     every tetrahedron positive.  Phantoms built on a locally invertible
+//     map, where they are positive and the next motion is small (the steps
+//     of the continuation), protect them (`protect_fixed_boundaries`).
 //   - Fixed vertices.  As in 2D, the fixed outer vertices of a fan split it
 //     into sectors aggregated on their own: a fixed outer vertex is never
 //     dropped, and no phantom edge joins two fixed vertices (it would cut
@@ -71,6 +77,10 @@ struct Phantom_options_3
   double min_quality = 1e-2;
   /// close boundary vertex stars (regular and irregular); false: edge fans only
   bool close_boundary_stars = true;
+  /// also protect the stars and edge fans of a fixed boundary (a boundary
+  /// vertex or edge whose boundary faces are all fixed); see "Fixed
+  /// boundaries" above for why they are left alone by default
+  bool protect_fixed_boundaries = false;
 };
 
 struct Phantom_statistics_3
@@ -519,7 +529,7 @@ private:
       // fold, and closing it would confine the free neighbour q (or p*) to
       // the cone its fixed faces see, which a large prescribed motion (the
       // rotated cavities) leaves no room for.
-      bool prescribed = fixed(p);
+      bool prescribed = fixed(p) && !options_.protect_fixed_boundaries;
       for(std::size_t w : loop) prescribed = prescribed && fixed(w);
       if(prescribed) { ++stats_.prescribed_boundary_vertices; continue; }
       sorted_loop_ = loop;
