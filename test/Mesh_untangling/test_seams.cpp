@@ -6,11 +6,13 @@
 // 3 pi / 2) and a pillow (4 cones of pi), each tangled by moving interior uv
 // wedges, must end locally injective on the surface with every seam
 // transition preserved to 1e-12 and the cones in place; bad seams are
-// named by edge; a fold across a seam, invisible on the cut mesh, is caught.
+// named by edge; a fold across a seam, invisible on the cut mesh, is caught;
+// transitions given through the API replace the detection.
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
+#include <CGAL/Mesh_untangling/seamless_invertibility.h>
 #include <CGAL/untangle_mesh.h>
 
 #include "seamless_generators.h"
@@ -239,6 +241,114 @@ void check_bad_seams()
   CHECK(rf.status == MU::Untangling_status::INVALID_INPUT || rf.status == MU::Untangling_status::SUCCESS);
 }
 
+using Edge_transitions = tools::Seamless_surface::Mesh::Property_map<tools::Seamless_surface::Mesh::Edge_index, MU::Seam_transition>;
+
+/// The transitions `seams` found on `m`, as a user gives them: per edge of
+/// `s` (made from `m`), from the face of its halfedge to the other; the
+/// identity off the seams.
+Edge_transitions transitions_of(tools::Seamless_surface& s, const MU::internal::Seams& seams)
+{
+  auto map = s.mesh.add_property_map<tools::Seamless_surface::Mesh::Edge_index, MU::Seam_transition>("e:transition").first;
+  for(const auto& e : seams.seam_edges) {
+    const auto h = s.corner_halfedge[3 * e.face + (e.corner + 1) % 3];   // from corner `corner` to the next
+    map[s.mesh.edge(h)] = s.mesh.halfedge(s.mesh.edge(h)) == h ? e.transition : e.transition.inverse();
+  }
+  return map;
+}
+
+/// Transitions given through the API instead of read off the uv: the ones
+/// detection finds give the same run bit for bit; one that contradicts the
+/// uv is refused with its edge named; a seam edge of no length in uv, which
+/// detection refuses, is untangled when its transition is given.
+void check_given_transitions()
+{
+  Mesh_file m = tools::make_seamless_cube(4);
+  tools::tangle_seamless(m, 1.2, 0.5, 7);
+  const auto seams = seams_of(m);
+  tools::Seamless_surface detected = tools::make_seamless_surface(m), given = tools::make_seamless_surface(m);
+  const Edge_transitions transitions = transitions_of(given, seams);
+  const MU::Untangling_result rd = CGAL::untangle_mesh(detected.mesh, detected.uv);
+  const MU::Untangling_result rg = CGAL::untangle_mesh(given.mesh, given.uv, MU::parameters::seam_transitions(transitions));
+  std::cout << "given transitions: " << MU::to_string(rg.status) << ", detected: " << MU::to_string(rd.status) << "\n";
+  CHECK(rd.status == MU::Untangling_status::SUCCESS && rg.status == MU::Untangling_status::SUCCESS);
+  CHECK(rd.outer_iterations == rg.outer_iterations && rd.number_of_fixed_vertices == rg.number_of_fixed_vertices);
+  std::size_t different = 0;
+  for(auto h : detected.mesh.halfedges())
+    if(!detected.mesh.is_border(h) && detected.uv[h] != given.uv[h]) ++different;
+  CHECK_MESSAGE(different == 0, different << " corners differ between given and detected transitions");
+
+  // one seam edge's transition shifted by half a cell: refused, the edge named
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(m);
+    Edge_transitions t = transitions_of(s, seams);
+    const auto& e = seams.seam_edges[seams.seam_edges.size() / 2];
+    const auto h = s.corner_halfedge[3 * e.face + (e.corner + 1) % 3];
+    t[s.mesh.edge(h)].translation[0] += 0.5;
+    const std::size_t a = m.simplices[e.face][e.corner], b = m.simplices[e.face][(e.corner + 1) % 3];
+    const std::string name = "seam edge " + MU::internal::edge_name((std::min)(a, b), (std::max)(a, b)) + " between faces " +
+                             std::to_string(e.face) + " and " + std::to_string(e.opposite_face);
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+    std::cout << "contradicting transition: " << r.message << "\n";
+    CHECK(r.status == MU::Untangling_status::INVALID_INPUT);
+    CHECK_MESSAGE(r.message.find(name) != std::string::npos, r.message << " does not name " << name);
+    // the same map through the verdict
+    CHECK_THROWS_MESSAGE(MU::check_seamless_parameterization(s.mesh, s.uv, MU::parameters::seam_transitions(t)), name);
+  }
+  // an edge inside a chart given as a seam: refused too
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(m);
+    Edge_transitions t = transitions_of(s, seams);
+    std::size_t inside = 0;
+    for(auto e : s.mesh.edges())
+      if(!s.mesh.is_border(e) && t[e].is_identity()) { inside = std::size_t(e); break; }
+    t[tools::Seamless_surface::Mesh::Edge_index(inside)].turns = 1;
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+    CHECK_MESSAGE(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("seam edge (") != std::string::npos, r.message);
+  }
+
+  // a seam edge collapsed to a point in uv on both sides (its second vertex's
+  // wedges moved onto the first's): detection cannot tell its rotation
+  Mesh_file torus = tools::make_seamless_torus(6);
+  const auto torus_seams = seams_of(torus);
+  std::vector<int> wedges(torus.rest.size(), 0);
+  for(std::size_t v : torus_seams.vertex_of_wedge) ++wedges[v];
+  const MU::internal::Seams::Edge* collapsed = nullptr;
+  for(const auto& e : torus_seams.seam_edges)   // away from the vertex where the two seams cross
+    if(wedges[torus.simplices[e.face][e.corner]] == 2 && wedges[torus.simplices[e.face][(e.corner + 1) % 3]] == 2) {
+      collapsed = &e;
+      break;
+    }
+  CHECK(collapsed != nullptr);
+  if(collapsed == nullptr) return;
+  for(std::size_t f : {collapsed->face, collapsed->opposite_face}) {
+    const std::size_t a = torus.simplices[collapsed->face][collapsed->corner];
+    const std::size_t b = torus.simplices[collapsed->face][(collapsed->corner + 1) % 3];
+    int ia = 0, ib = 0;
+    for(int i = 0; i < 3; ++i) {
+      if(torus.simplices[f][i] == a) ia = i;
+      if(torus.simplices[f][i] == b) ib = i;
+    }
+    torus.corner_map[torus.simplex_corner_map[f][ib]] = torus.corner_map[torus.simplex_corner_map[f][ia]];
+  }
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(torus);
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv);
+    std::cout << "collapsed seam edge, detected: " << r.message << "\n";
+    CHECK_MESSAGE(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("no length") != std::string::npos, r.message);
+  }
+  tools::Seamless_surface s = tools::make_seamless_surface(torus);
+  const Edge_transitions t = transitions_of(s, torus_seams);
+  const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+  std::cout << "collapsed seam edge, given: " << MU::to_string(r.status) << ", inverted " << r.inverted_before << " -> "
+            << r.inverted_after << (r.message.empty() ? "" : ": ") << r.message << "\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, r.message);
+  CHECK(r.inverted_before > 0 && r.inverted_after == 0);
+  Mesh_file after = torus;
+  tools::read_back_corner_map(s, after);
+  CHECK(negative_triangles(after) == 0);
+  check_transitions_kept(tools::make_seamless_torus(6), after, "collapsed seam edge");
+}
+
 void check_obj_round_trip()
 {
   const Mesh_file m = tools::make_seamless_cube(2);
@@ -259,6 +369,7 @@ int main()
   try {
     check_obj_round_trip();
     check_bad_seams();
+    check_given_transitions();
     check_covering_across_seams();
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0, MU::Solver::LBFGS);

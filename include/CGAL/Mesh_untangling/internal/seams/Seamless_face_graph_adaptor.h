@@ -8,6 +8,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAMLESS_FACE_GRAPH_ADAPTOR_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAMLESS_FACE_GRAPH_ADAPTOR_H
 
+#include <CGAL/Mesh_untangling/Seam_transition.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/internal/front_ends.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
@@ -41,10 +42,11 @@ public:
   std::size_t vertex_index(std::size_t w) const { return seams_.vertex_of_wedge[w]; }
 
   /// The wedges, their links and the flattened faces; `error()` says why
-  /// when the seams cannot be (the input is then empty).
-  template <typename HalfedgeUVMap, typename DomainMap, typename FixedMap>
+  /// when the seams cannot be (the input is then empty).  `transitions`:
+  /// an edge -> Seam_transition map, or Param_not_found (read off the uv).
+  template <typename HalfedgeUVMap, typename DomainMap, typename FixedMap, typename TransitionMap>
   Untangling_input<2> make_input(const HalfedgeUVMap& uv, const DomainMap& domain, const FixedMap& fixed,
-                                 Seam_translations translations)
+                                 Seam_translations translations, const TransitionMap& transitions)
   {
     Untangling_input<2> in;
     std::vector<std::array<std::size_t, 3>> triangles;
@@ -71,7 +73,7 @@ public:
     }
     const std::size_t n = num_vertices(tm_);
     try {
-      seams_ = detect_seams(n, triangles, corner_uv);
+      seams_ = detect_seams(n, triangles, corner_uv, 1e-6, given_transitions(transitions));
       std::vector<char> cone;
       const Wedge_links links = link_wedges(seams_, n, rest_angle_sums(triangles, in.targets, n), cone);
       for(std::size_t w = 0; w < links.representative.size(); ++w) {
@@ -114,6 +116,24 @@ public:
   }
 
 private:
+  /// Per corner 3 f + i, the transition from face f across its edge from
+  /// corner i to corner i + 1 (seam_layout.h): the user's, inverted when
+  /// that edge's halfedge is the other one.  Empty when none is given.
+  template <typename TransitionMap>
+  std::vector<Seam_transition> given_transitions(const TransitionMap& transitions) const
+  {
+    std::vector<Seam_transition> given;
+    if constexpr(is_given<TransitionMap>()) {
+      given.reserve(halfedges_.size());
+      for(std::size_t c = 0; c < halfedges_.size(); ++c) {
+        const halfedge_descriptor h = halfedges_[c - c % 3 + (c % 3 + 1) % 3];   // target: corner i + 1
+        const Seam_transition t = get(transitions, edge(h, tm_));
+        given.push_back(halfedge(edge(h, tm_), tm_) == h ? t : t.inverse());
+      }
+    }
+    return given;
+  }
+
   TriangleMesh& tm_;
   Face_graph_adaptor<TriangleMesh> vertices_;   // (its vertex numbering only)
   std::vector<halfedge_descriptor> halfedges_;  // per corner 3 f + i, f in faces(tm) order
