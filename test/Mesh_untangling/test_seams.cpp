@@ -7,10 +7,12 @@
 // wedges, must end locally injective on the surface with every seam
 // transition preserved to 1e-12 and the cones in place; bad seams are
 // named by edge; a fold across a seam, invisible on the cut mesh, is caught;
-// transitions given through the API replace the detection.
+// transitions given through the API replace the detection; the layout of
+// free translations keeps rotations and one translation per seam.
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
+#include <CGAL/Mesh_untangling/internal/seams/free_translations.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
 #include <CGAL/Mesh_untangling/seamless_invertibility.h>
 #include <CGAL/untangle_mesh.h>
@@ -18,7 +20,9 @@
 #include "seamless_generators.h"
 #include "seamless_surface.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -349,6 +353,129 @@ void check_given_transitions()
   check_transitions_kept(tools::make_seamless_torus(6), after, "collapsed seam edge");
 }
 
+/// A fan of 6 triangles around vertex 0 cut into three charts, turned by one,
+/// one and two quarter turns: a vertex where three seams meet that is no
+/// cone, so the seams' translations are bound by its closure.
+Mesh_file three_seam_fan()
+{
+  const double pi = std::acos(-1.);
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.rest_dimension = 3;
+  m.rest.push_back({0, 0, 0});
+  for(int k = 0; k < 6; ++k) m.rest.push_back({std::cos(k * pi / 3), std::sin(k * pi / 3), 0});
+  const MU::Seam_transition chart[3] = {{0, {0., 0.}}, {1, {5., 0.}}, {2, {0., 7.}}};
+  for(int k = 0; k < 6; ++k) {
+    const std::array<std::size_t, 3> t{0, std::size_t(1 + k), std::size_t(1 + (k + 1) % 6)};
+    m.simplices.push_back({t[0], t[1], t[2], 0});
+    std::array<std::size_t, 4> corners{0, 0, 0, 0};
+    for(int i = 0; i < 3; ++i) {
+      const Uv uv = chart[k / 2](Uv{m.rest[t[i]][0], m.rest[t[i]][1]});
+      corners[i] = m.corner_map.size();
+      m.corner_map.push_back({uv[0], uv[1], 0});
+    }
+    m.simplex_corner_map.push_back(corners);
+  }
+  return m;
+}
+
+/// The wedges as functions of the representatives and the seams'
+/// translations (Seam_translations::FREE's layout, not offered yet): the
+/// input at z = 0 bit for bit; for any z every seam keeps its rotation to
+/// 1e-12, its translation is one along the seam and the one the layout
+/// says, the transitions close around every vertex (the detection reads the
+/// moved map without complaint) and the cones move with the translations.
+void check_free_translation_layout()
+{
+  std::srand(11);
+  const auto random = [] { return double(std::rand()) / RAND_MAX - 0.5; };
+  for(const auto& [name, m, chains, unknowns] :
+      {std::tuple(std::string("torus"), tools::make_seamless_torus(6), 2, 4),
+       std::tuple(std::string("cube"), tools::make_seamless_cube(3), 12, 24),
+       std::tuple(std::string("pillow"), tools::make_seamless_pillow(4), 4, 8),
+       std::tuple(std::string("three seams"), three_seam_fan(), 3, 4)}) {
+    const auto seams = seams_of(m);
+    std::vector<char> cone;
+    const auto links = MU::internal::link_wedges(seams, m.rest.size(), {}, cone);
+    const auto layout = MU::internal::free_translation_layout(seams, links, cone, {});
+    std::cout << name << ": " << seams.seam_edges.size() << " seam edges, " << layout.number_of_chains() << " seams, "
+              << layout.number_of_unknowns() << " translation unknowns\n";
+    CHECK_MESSAGE(int(layout.number_of_chains()) == chains && int(layout.number_of_unknowns()) == unknowns,
+                  name << ": " << layout.number_of_chains() << " seams, " << layout.number_of_unknowns() << " unknowns");
+    std::vector<Uv> keep = seams.wedge_uv;
+    for(std::size_t w = 0; w < keep.size(); ++w)
+      if(links.representative[w] != w)
+        keep[w] = MU::internal::plus(MU::internal::turned(links.turns[w], keep[links.representative[w]]), links.translation[w]);
+    CHECK(layout.positions(links, keep, Eigen::VectorXd::Zero(layout.number_of_unknowns())) == keep);
+
+    Eigen::VectorXd z(layout.number_of_unknowns());
+    for(Eigen::Index i = 0; i < z.size(); ++i) z[i] = random();
+    const std::vector<Uv> x = layout.positions(links, keep, z);
+    std::vector<Uv> uv(3 * m.simplices.size());
+    for(std::size_t c = 0; c < uv.size(); ++c) uv[c] = x[seams.wedge_of_corner[c]];
+    const Eigen::VectorXd tau_change = layout.basis * z;
+    double rotation_error = 0, translation_error = 0;
+    for(std::size_t e = 0; e < seams.seam_edges.size(); ++e) {
+      const auto& s = seams.seam_edges[e];
+      const std::size_t ca = 3 * s.face + s.corner, cb = 3 * s.face + (s.corner + 1) % 3;
+      std::size_t ga = 0, gb = 0;
+      for(int i = 0; i < 3; ++i) {
+        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][ca % 3]) ga = 3 * s.opposite_face + i;
+        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][cb % 3]) gb = 3 * s.opposite_face + i;
+      }
+      using MU::internal::minus;
+      using MU::internal::norm;
+      using MU::internal::turned;
+      rotation_error = std::max(rotation_error, norm(minus(turned(s.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
+      MU::Seam_transition moved{s.transition.turns, minus(uv[ga], turned(s.transition.turns, uv[ca]))};
+      if(layout.edge_reversed[e]) moved = moved.inverse();
+      const std::size_t j = layout.chain_of_edge[e];
+      const Uv expected{layout.chain_translation[j][0] + tau_change[2 * j], layout.chain_translation[j][1] + tau_change[2 * j + 1]};
+      translation_error = std::max(translation_error, norm(minus(moved.translation, expected)));
+    }
+    std::cout << name << ": rotations kept to " << rotation_error << ", translations one per seam to " << translation_error << "\n";
+    CHECK_MESSAGE(rotation_error <= 1e-12, name << ": a rotation is off by " << rotation_error);
+    CHECK_MESSAGE(translation_error <= 1e-12, name << ": a translation is off by " << translation_error);
+    CHECK_MESSAGE(tau_change.norm() > 0.1, name << ": the translations did not move");
+    std::vector<char> moved_cone;
+    try {
+      MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), uv), m.rest.size(), {}, moved_cone);
+      CHECK(moved_cone == cone);
+    } catch(const std::exception& e) {
+      CHECK_MESSAGE(false, name << ": the moved map's seams are refused: " << e.what());
+    }
+    double cone_motion = 0;
+    for(std::size_t w = 0; w < x.size(); ++w)
+      if(cone[seams.vertex_of_wedge[w]]) cone_motion = std::max(cone_motion, MU::internal::norm(MU::internal::minus(x[w], keep[w])));
+    CHECK_MESSAGE((cone_motion > 1e-3) == (std::count(cone.begin(), cone.end(), 1) > 0), name << ": cones moved by " << cone_motion);
+
+    // the translations moved without the closure's null space: at the fan's
+    // centre they no longer compose to zero, and the seam that closes the
+    // fan is no longer one (the detection refuses it)
+    if(name == "three seams") {
+      MU::internal::Free_translation_layout unbound = layout;
+      unbound.basis = Eigen::MatrixXd::Identity(2 * chains, 2 * chains);
+      unbound.terms.assign(keep.size(), {});
+      for(std::size_t w = 0; w < keep.size(); ++w) {
+        std::vector<std::size_t> path;   // the seams crossed from the representative, in the layout's own terms
+        MU::internal::Symbolic_transition t;
+        for(std::size_t u = w; links.tree_parent[u] != u; u = links.tree_parent[u]) path.push_back(u);
+        for(auto it = path.rbegin(); it != path.rend(); ++it)
+          t = MU::internal::symbolic_edge(unbound, links.tree_edge[*it], links.tree_forward[*it] != 0).after(t);
+        for(const auto& [j, mat] : t.terms)
+          for(int c = 0; c < 2; ++c) unbound.terms[w].emplace_back(2 * j + c, Eigen::Vector2d(mat.col(c)));
+      }
+      Eigen::VectorXd one = Eigen::VectorXd::Zero(2 * chains);
+      one[0] = 0.5;
+      const std::vector<Uv> y = unbound.positions(links, keep, one);
+      std::vector<Uv> broken(uv.size());
+      for(std::size_t c = 0; c < uv.size(); ++c) broken[c] = y[seams.wedge_of_corner[c]];
+      CHECK_THROWS(MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), broken),
+                                             m.rest.size(), {}, moved_cone));
+    }
+  }
+}
+
 void check_obj_round_trip()
 {
   const Mesh_file m = tools::make_seamless_cube(2);
@@ -370,6 +497,7 @@ int main()
     check_obj_round_trip();
     check_bad_seams();
     check_given_transitions();
+    check_free_translation_layout();
     check_covering_across_seams();
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0, MU::Solver::LBFGS);

@@ -229,6 +229,20 @@ struct Wedge_links
   std::vector<int> turns;
   std::vector<Uv> translation;
   std::vector<double> angle;   // per representative: the angle sum prescribed; -1 on the boundary
+
+  // How each wedge was reached from its representative, so that the same
+  // path can be composed with other translations (free_translations.h): the
+  // wedge before it (itself for a representative), the seam edge crossed
+  // (an index into Seams::seam_edges) and whether that edge's transition
+  // was applied (1) or its inverse (0); `order` lists every wedge after the
+  // one before it.
+  std::vector<std::size_t> tree_parent, tree_edge, order;
+  std::vector<char> tree_forward;
+  /// A closing arc around `vertex`: the transitions from its representative
+  /// to `from`, across `edge` (forward or not) to `to`, and back from `to`
+  /// make its holonomy.
+  struct Loop { std::size_t vertex, from, to, edge; bool forward; };
+  std::vector<Loop> loops;
 };
 
 /// The links of the wedges of `seams`: per surface vertex, its representative
@@ -256,9 +270,14 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
   cone.assign(number_of_vertices, 0);
   // the seam edges as arcs between wedges of one vertex, all in one sense
   // around it (from the face after the seam to the one before, counterclockwise)
-  struct Arc { std::size_t from, to; Seam_transition t; std::size_t face; };
+  struct Arc { std::size_t from, to; Seam_transition t; std::size_t face, edge; bool forward; };
   std::vector<std::vector<Arc>> arcs(n);
-  for(const auto& e : seams.seam_edges) {
+  links.tree_parent.resize(n);
+  std::iota(links.tree_parent.begin(), links.tree_parent.end(), std::size_t(0));
+  links.tree_edge.assign(n, std::size_t(-1));
+  links.tree_forward.assign(n, 1);
+  for(std::size_t edge = 0; edge < seams.seam_edges.size(); ++edge) {
+    const auto& e = seams.seam_edges[edge];
     const std::size_t ca = 3 * e.face + e.corner, cb = 3 * e.face + (e.corner + 1) % 3;
     // in the opposite face g, a follows b
     std::size_t ga = 0, gb = 0;
@@ -267,8 +286,8 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
       if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[ca]]) ga = c;
       if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[cb]]) gb = c;
     }
-    const Arc at_a{seams.wedge_of_corner[ca], seams.wedge_of_corner[ga], e.transition, e.face};
-    const Arc at_b{seams.wedge_of_corner[gb], seams.wedge_of_corner[cb], e.transition.inverse(), e.face};
+    const Arc at_a{seams.wedge_of_corner[ca], seams.wedge_of_corner[ga], e.transition, e.face, edge, true};
+    const Arc at_b{seams.wedge_of_corner[gb], seams.wedge_of_corner[cb], e.transition.inverse(), e.face, edge, false};
     for(const Arc& arc : {at_a, at_b}) {
       arcs[arc.from].push_back(arc);
       if(arc.to != arc.from) arcs[arc.to].push_back(arc);
@@ -286,20 +305,30 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
     std::vector<std::size_t> queue{root};
     seen[root] = 1;
     links.representative[root] = root;
+    links.order.push_back(root);
     for(std::size_t q = 0; q < queue.size(); ++q) {
       const std::size_t u = queue[q];
       for(const Arc& arc : arcs[u]) {
         const std::size_t other = arc.from == u ? arc.to : arc.from;
         const Seam_transition step = arc.from == u ? arc.t : arc.t.inverse();
         const Seam_transition reached = step.after(transition[u]);
+        const bool forward = (arc.from == u) == arc.forward;
         if(!seen[other]) {
           seen[other] = 1;
           transition[other] = reached;
           links.representative[other] = root;
+          links.tree_parent[other] = u;
+          links.tree_edge[other] = arc.edge;
+          links.tree_forward[other] = forward;
+          links.order.push_back(other);
           queue.push_back(other);
           continue;
         }
         if(arc.from != u) continue;   // each closing arc once
+        // (an arc that reached a wedge is met again from its other end: not a loop)
+        const bool tree_arc = (links.tree_parent[other] == u && links.tree_edge[other] == arc.edge) ||
+                              (links.tree_parent[u] == other && links.tree_edge[u] == arc.edge);
+        if(!tree_arc) links.loops.push_back({v, u, other, arc.edge, forward});
         // the loop root -> u -> other -> root: the holonomy
         const Seam_transition loop = transition[other].inverse().after(reached);
         const int turns = ((loop.turns % 4) + 4) % 4;
