@@ -237,12 +237,18 @@ void check_bad_seams()
   CHECK(rc.status == MU::Untangling_status::INVALID_INPUT);
   CHECK(rc.message.find("seam edge") != std::string::npos || rc.message.find("cone") != std::string::npos);
 
-  // free translations: refused for now, with a message
+  // free translations: refused for now (the solvers do not take their layout
+  // yet, free_translations.h), with a message, the map untouched
   Mesh_file torus = tools::make_seamless_torus(4);
   tools::Seamless_surface t = tools::make_seamless_surface(torus);
+  std::vector<tools::Seamless_surface::Kernel::Point_2> uv_before;   // (a property map copies a handle)
+  for(auto h : t.mesh.halfedges()) uv_before.push_back(t.uv[h]);
   const MU::Untangling_result rf =
     CGAL::untangle_mesh(t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE));
-  CHECK(rf.status == MU::Untangling_status::INVALID_INPUT || rf.status == MU::Untangling_status::SUCCESS);
+  CHECK_MESSAGE(rf.status == MU::Untangling_status::INVALID_INPUT &&
+                rf.message.find("free seam translations are not implemented") != std::string::npos, rf.message);
+  std::size_t i = 0;
+  for(auto h : t.mesh.halfedges()) CHECK(t.uv[h] == uv_before[i++]);
 }
 
 using Edge_transitions = tools::Seamless_surface::Mesh::Property_map<tools::Seamless_surface::Mesh::Edge_index, MU::Seam_transition>;
