@@ -152,7 +152,9 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///     \cgalParamDefault{no vertex is fixed (cones are, with translations kept)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::seam_translations}
-///     \cgalParamDescription{whether the translations across seams are kept}
+///     \cgalParamDescription{whether the translations across seams are kept; with `Seam_translations::FREE`
+///       each seam's translation is an unknown (the rotations are kept, the cones move), the solver is L-BFGS,
+///       and `Solver::NEWTON` gives `Untangling_status::INVALID_INPUT`}
 ///     \cgalParamType{`Mesh_untangling::Seam_translations`}
 ///     \cgalParamDefault{`Seam_translations::KEEP`}
 ///   \cgalParamNEnd

@@ -137,6 +137,60 @@ void check_untangles(Mesh_file m, const std::string& name, double amplitude, std
     }
 }
 
+/// Seam_translations::FREE: the map ends locally injective on the surface,
+/// nothing fixed (the cones move), every seam edge's two sides related by
+/// its rotation to 1e-12, and one translation along each seam (the chains of
+/// free_translation_layout) to 1e-12.
+void check_untangles_free(Mesh_file m, const std::string& name, double amplitude)
+{
+  tools::tangle_seamless(m, amplitude, 0.5, 7);
+  const Mesh_file tangled = m;
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  const MU::Untangling_result r = CGAL::untangle_mesh(
+    s.mesh, s.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, CGAL::parameters::maximum_running_time(60.)));
+  tools::read_back_corner_map(s, m);
+  std::cout << name << " (free translations, " << r.solver << "): " << MU::to_string(r.status) << ", inverted "
+            << r.inverted_before << " -> " << r.inverted_after << ", over-wound after " << r.overwound_vertices_after << ", "
+            << r.outer_iterations << " eps steps, " << r.seconds << " s" << (r.message.empty() ? "" : ": ") << r.message << "\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, name << ": " << r.message);
+  CHECK(r.inverted_after == 0 && r.overwound_vertices_after == 0);
+  CHECK(negative_triangles(m) == 0);
+  CHECK_MESSAGE(r.number_of_fixed_vertices == 0, name << ": " << r.number_of_fixed_vertices << " fixed");
+
+  const auto before = seams_of(tangled);
+  std::vector<char> cone;
+  const auto links = MU::internal::link_wedges(before, m.rest.size(), {}, cone);
+  const auto layout = MU::internal::free_translation_layout(before, links, cone, {});
+  const auto uv = corner_uv(m);
+  std::vector<std::vector<Uv>> per_seam(layout.number_of_chains());
+  double rotation_error = 0, moved = 0;
+  for(std::size_t e = 0; e < before.seam_edges.size(); ++e) {
+    const auto& se = before.seam_edges[e];
+    const std::size_t ca = 3 * se.face + se.corner, cb = 3 * se.face + (se.corner + 1) % 3;
+    std::size_t ga = 0, gb = 0;
+    for(int k = 0; k < 3; ++k) {
+      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][ca % 3]) ga = 3 * se.opposite_face + k;
+      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][cb % 3]) gb = 3 * se.opposite_face + k;
+    }
+    using MU::internal::minus;
+    using MU::internal::norm;
+    using MU::internal::turned;
+    rotation_error = std::max(rotation_error, norm(minus(turned(se.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
+    MU::Seam_transition now{se.transition.turns, minus(uv[ga], turned(se.transition.turns, uv[ca]))};
+    moved = std::max(moved, norm(minus(now.translation, se.transition.translation)));
+    if(layout.edge_reversed[e]) now = now.inverse();
+    per_seam[layout.chain_of_edge[e]].push_back(now.translation);
+  }
+  double spread = 0;
+  for(const auto& t : per_seam)
+    for(const Uv& u : t) spread = std::max(spread, MU::internal::norm(MU::internal::minus(u, t.front())));
+  std::cout << name << " (free translations): " << layout.number_of_chains() << " seams, rotations kept to " << rotation_error
+            << ", translations one per seam to " << spread << ", moved by up to " << moved << "\n";
+  CHECK_MESSAGE(rotation_error <= 1e-12, name << ": a seam's rotation is off by " << rotation_error);
+  CHECK_MESSAGE(spread <= 1e-12, name << ": a seam's translation varies by " << spread);
+  CHECK_MESSAGE(moved > 1e-3, name << ": the translations did not move (" << moved << ")");
+}
+
 /// A covering that only the surface's stars show: a vertex with 4 wedges
 /// (seams along every other edge of its 8 triangles, each wedge's chart
 /// translated), whose triangles are all positive but turn around it twice,
@@ -237,16 +291,14 @@ void check_bad_seams()
   CHECK(rc.status == MU::Untangling_status::INVALID_INPUT);
   CHECK(rc.message.find("seam edge") != std::string::npos || rc.message.find("cone") != std::string::npos);
 
-  // free translations: refused for now (the solvers do not take their layout
-  // yet, free_translations.h), with a message, the map untouched
+  // free translations with the Newton solver: refused (its pattern has one parent per vertex), the map untouched
   Mesh_file torus = tools::make_seamless_torus(4);
   tools::Seamless_surface t = tools::make_seamless_surface(torus);
   std::vector<tools::Seamless_surface::Kernel::Point_2> uv_before;   // (a property map copies a handle)
   for(auto h : t.mesh.halfedges()) uv_before.push_back(t.uv[h]);
-  const MU::Untangling_result rf =
-    CGAL::untangle_mesh(t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE));
-  CHECK_MESSAGE(rf.status == MU::Untangling_status::INVALID_INPUT &&
-                rf.message.find("free seam translations are not implemented") != std::string::npos, rf.message);
+  const MU::Untangling_result rf = CGAL::untangle_mesh(
+    t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, MU::parameters::solver(MU::Solver::NEWTON)));
+  CHECK_MESSAGE(rf.status == MU::Untangling_status::INVALID_INPUT && rf.message.find("Newton") != std::string::npos, rf.message);
   std::size_t i = 0;
   for(auto h : t.mesh.halfedges()) CHECK(t.uv[h] == uv_before[i++]);
 }
@@ -510,6 +562,9 @@ int main()
     check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24);
     check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24, MU::Solver::LBFGS);
     check_untangles(tools::make_seamless_pillow(6), "pillow", 1.2, 8);
+    check_untangles_free(tools::make_seamless_torus(12), "torus", 1.2);
+    check_untangles_free(tools::make_seamless_cube(5), "cube", 1.2);
+    check_untangles_free(tools::make_seamless_pillow(6), "pillow", 1.2);
   } catch(const std::exception& e) {
     std::cerr << "unexpected exception: " << e.what() << "\n";
     return 1;

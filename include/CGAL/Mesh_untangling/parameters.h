@@ -122,8 +122,11 @@ enum class Seam_translations
   /// every cone (a vertex whose transitions compose to a rotation) is the
   /// centre of that rotation, so it stays where it is
   KEEP,
-  /// each seam's translation is an unknown too: the seams slide along each
-  /// other, cones move
+  /// each seam's translation (one per chain of seam edges, bound where
+  /// three seams meet) is an unknown too: the seams slide along each other
+  /// and the cones, centres of their transitions' rotations, move with them.
+  /// Solved by L-BFGS (`Solver::NEWTON` is refused); the map is no
+  /// integer-grid map any more
   FREE
 };
 
