@@ -109,6 +109,10 @@ struct Vertex_links
   std::vector<double> following;                        // per vertex: D's entry (representatives)
   std::vector<std::vector<std::pair<std::size_t, Matrix>>> coupling;   // per representative r: (parameter, B_ur)
   Eigen::LLT<Eigen::MatrixXd> schur;
+  // The parameters held where they are (set by the eps loop, see
+  // Eps_loop::run): the projection then moves the representatives only, as
+  // with the translations kept.
+  bool hold_parameters = false;
 
   /// Fills the member rows; to call once the three per-vertex arrays are set.
   void finish()
@@ -260,7 +264,7 @@ void project_gradient_on_parents(const Vertex_links<d>& links, double* g)
   for(std::size_t r = 0; r < n; ++r)
     for(const auto& [u, B] : links.coupling[r])
       rhs.template segment<d>(d * links.parameter_index[u]) -= B * h[r] / links.following[r];
-  const Eigen::VectorXd yz = links.schur.solve(rhs);
+  const Eigen::VectorXd yz = links.hold_parameters ? Eigen::VectorXd::Zero(rhs.size()) : Eigen::VectorXd(links.schur.solve(rhs));
   std::vector<Vector> y(n, Vector::Zero());
   for(std::size_t v = 0; v < n; ++v) {
     if(links.is_dependent(v)) continue;
