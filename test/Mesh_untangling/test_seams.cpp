@@ -193,6 +193,27 @@ void check_untangles_free(Mesh_file m, const std::string& name, double amplitude
   if(translations_move) CHECK_MESSAGE(moved > 0.1, name << ": the translations did not move (" << moved << ")");
 }
 
+/// Free translations with a fixed vertex: its corners keep their uv bit for
+/// bit (the translations around it are bound, the wedges of a fixed cone too).
+void check_free_with_fixed_vertex(Mesh_file m, const std::string& name, std::size_t fixed_vertex)
+{
+  tools::tangle_seamless(m, 1.2, 0.5, 7);
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  using Mesh = tools::Seamless_surface::Mesh;
+  auto fixed = s.mesh.add_property_map<Mesh::Vertex_index, bool>("v:fixed", false).first;
+  fixed[Mesh::Vertex_index(fixed_vertex)] = true;
+  std::vector<std::pair<Mesh::Halfedge_index, tools::Seamless_surface::Kernel::Point_2>> corners;
+  for(auto h : s.mesh.halfedges())
+    if(!s.mesh.is_border(h) && std::size_t(s.mesh.target(h)) == fixed_vertex) corners.emplace_back(h, s.uv[h]);
+  const MU::Untangling_result r = CGAL::untangle_mesh(
+    s.mesh, s.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, CGAL::parameters::vertex_is_constrained_map(fixed)));
+  std::cout << name << " (free translations, vertex " << fixed_vertex << " fixed): " << MU::to_string(r.status) << ", "
+            << r.number_of_fixed_vertices << " fixed wedges\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, name << ": " << r.message);
+  CHECK(r.number_of_fixed_vertices > 1);
+  for(const auto& [h, uv] : corners) CHECK_MESSAGE(s.uv[h] == uv, name << ": a fixed corner moved");
+}
+
 /// A covering that only the surface's stars show: a vertex with 4 wedges
 /// (seams along every other edge of its 8 triangles, each wedge's chart
 /// translated), whose triangles are all positive but turn around it twice,
@@ -567,6 +588,8 @@ int main()
     check_untangles_free(tools::make_seamless_torus(12), "torus", 1.2, true);
     check_untangles_free(tools::make_seamless_cube(5), "cube", 1.2, false);
     check_untangles_free(tools::make_seamless_pillow(6), "pillow", 1.2, false);
+    check_free_with_fixed_vertex(tools::make_seamless_torus(12), "torus", 0);
+    check_free_with_fixed_vertex(tools::make_seamless_cube(5), "cube", 0);
   } catch(const std::exception& e) {
     std::cerr << "unexpected exception: " << e.what() << "\n";
     return 1;

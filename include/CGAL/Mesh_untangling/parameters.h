@@ -125,8 +125,9 @@ enum class Seam_translations
   /// each seam's translation (one per chain of seam edges, bound where
   /// three seams meet) is an unknown too: the seams slide along each other
   /// and the cones, centres of their transitions' rotations, move with them.
-  /// Solved by L-BFGS (`Solver::NEWTON` is refused); the map is no
-  /// integer-grid map any more
+  /// Solved by L-BFGS (`Solver::NEWTON` is refused); the translations
+  /// move once the map is valid (they relax it, they do not untangle it),
+  /// and the map is no integer-grid map any more
   FREE
 };
 
