@@ -625,6 +625,7 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["seams_kept"] = seams.same_seams;
   j["max_translation_change"] = seams.max_translation_change;
   j["max_seam_side_gap"] = seams.max_side_gap;
+  j["max_seam_side_gap_own_transitions"] = seams.max_own_side_gap;
   j["integer_grid_singular_vertices_before"] = grid_before.singular;
   j["integer_grid_singular_vertices_after"] = grid_after.singular;
   j["integer_grid_singular_at_vertices_after"] = grid_after.at_vertices;
@@ -723,12 +724,21 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     std::fprintf(stderr, "%s: inverted %zu -> %zu, over-wound vertices %zu -> %zu, input defects %zu, %.2f s\n",
                  verdict_text.c_str(), before.inverted, verdict.inverted, before.overwound_vertices,
                  verdict.overwound_vertices, verdict.input_defects, run.result.seconds);
-    std::fprintf(stderr, "seams: %zu seam edges, %zu cones, %s; translations moved by at most %.3g, seam sides apart "
-                 "by at most %.3g\n", seams.seam_edges, seams.cones,
-                 seams.same_seams ? "the same seams and rotations" : "SEAMS CHANGED", seams.max_translation_change,
-                 seams.max_side_gap);
-    std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)\n",
-                 grid_before.singular, grid_after.singular, grid_after.at_vertices);
+    const bool free = options.seam_translations == MU::Seam_translations::FREE;
+    if(free)
+      std::fprintf(stderr, "seams: %zu seam edges, %zu cones, %s; translations free, moved by at most %.3g; seam sides "
+                   "apart by at most %.3g through their new transitions\n", seams.seam_edges, seams.cones,
+                   seams.same_seams ? "the same seams and rotations" : "SEAMS CHANGED", seams.max_translation_change,
+                   seams.max_own_side_gap);
+    else
+      std::fprintf(stderr, "seams: %zu seam edges, %zu cones, %s; translations moved by at most %.3g, seam sides apart "
+                   "by at most %.3g\n", seams.seam_edges, seams.cones,
+                   seams.same_seams ? "the same seams and rotations" : "SEAMS CHANGED", seams.max_translation_change,
+                   seams.max_side_gap);
+    // (with free translations the map is no integer-grid map any more: the count only describes it)
+    std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)%s\n",
+                 grid_before.singular, grid_after.singular, grid_after.at_vertices,
+                 free ? "; translations free: the grid is not aligned with the seams any more" : "");
     if(!verdict.locally_invertible)
       std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
                                                                    : run.result.message.c_str());

@@ -121,7 +121,7 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 /// `face(h)`), so that a vertex on a seam has one uv per wedge (the corners
 /// between two seam edges).  The transition across each seam edge, a
 /// rotation by a multiple of 90 degrees and a translation, is read off the
-/// uv of its two sides; the result keeps every transition exactly (the
+/// uv of its two sides (or given: `Mesh_untangling::parameters::seam_transitions`); the result keeps every transition exactly (the
 /// rotations always, the translations as `Mesh_untangling::parameters::seam_translations` says),
 /// every triangle positive in its chart, and every vertex's star covering
 /// the angle its transitions prescribe once (2 pi at a regular vertex, the
@@ -152,9 +152,20 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///     \cgalParamDefault{no vertex is fixed (cones are, with translations kept)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::seam_translations}
-///     \cgalParamDescription{whether the translations across seams are kept}
+///     \cgalParamDescription{whether the translations across seams are kept; with `Seam_translations::FREE`
+///       each seam's translation is an unknown (the rotations are kept, the cones move), the solver is L-BFGS,
+///       and `Solver::NEWTON` gives `Untangling_status::INVALID_INPUT`}
 ///     \cgalParamType{`Mesh_untangling::Seam_translations`}
 ///     \cgalParamDefault{`Seam_translations::KEEP`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::seam_transitions}
+///     \cgalParamDescription{the transition across every edge, instead of reading it off the uv: the transition
+///       of `e` maps the uv in `face(halfedge(e, tm), tm)` to the uv in the face of its opposite, and an edge
+///       whose transition is not the identity is a seam (even one with no length in uv).  The uv of both sides
+///       must agree through it within 1e-6 of the uv's extent, else `Untangling_status::INVALID_INPUT` names the
+///       edge and its faces.  Cones and holonomies follow from the transitions given}
+///     \cgalParamType{a readable property map edge -> `Mesh_untangling::Seam_transition`}
+///     \cgalParamDefault{the transitions are read off the uv}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback, theta, solver}
 ///     \cgalParamDescription{as for the vertex uv map overload}
@@ -177,11 +188,12 @@ untangle_mesh(TriangleMesh& tm, HalfedgeUVMap uv, const NamedParameters& np = pa
                                       Static_boolean_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, false>());
   const auto translations = choose_parameter(get_parameter(np, internal_np::mesh_untangling_seam_translations),
                                              Mesh_untangling::Seam_translations::KEEP);
+  const auto transitions = get_parameter(np, internal_np::mesh_untangling_seam_transitions);
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
 
   Mesh_untangling::internal::Seamless_face_graph_adaptor<TriangleMesh> adaptor(tm);
-  auto input = adaptor.make_input(uv, surface, fixed, translations);
+  auto input = adaptor.make_input(uv, surface, fixed, translations, transitions);
   if(!adaptor.error().empty()) {
     Mesh_untangling::Untangling_result invalid;
     invalid.message = adaptor.error();

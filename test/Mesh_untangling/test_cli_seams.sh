@@ -4,7 +4,8 @@
 # make_tangled_mesh untangles to exit 0, written back in the same layout
 # (the same v lines, as many vt, faces naming the same v and vt), with every
 # seam transition kept to 1e-12 and the integer-grid singular vertices down
-# to the cones; bad seams and options that do not apply are usage errors.
+# to the cones; with --seams free-translations the seams slide (rotations
+# kept); bad seams and options that do not apply are usage errors.
 # usage: test_cli_seams.sh UNTANGLE_MESH MAKE_TANGLED_MESH
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_seams "$@"
@@ -53,10 +54,22 @@ check "bad seam: nothing written" [ ! -e bad-out.obj ]
 check "seams to .vtk: exit 2" [ $? = 2 ]
 "$UNTANGLE" torus.obj -o t.obj --refine --quiet 2> refine.err
 check "--refine: exit 2" [ $? = 2 ]
-"$UNTANGLE" torus.obj -o t.obj --seams free-translations --quiet 2> free.err
+"$UNTANGLE" torus.obj -o t.obj --seams free-translations --solver newton --quiet 2> free.err
 code=$?
-check "free-translations: said not to be offered yet (exit 2, code $code)" [ "$code" = 2 ]
-check "free-translations: why" grep -q 'free seam translations' free.err
+check "free-translations with newton: refused (exit 2, code $code)" [ "$code" = 2 ]
+check "free-translations with newton: why" grep -q 'Newton solver does not take free seam translations' free.err
+
+# free translations: the cube's seams slide, its cones move; rotations kept
+"$UNTANGLE" seamcube.obj -o cube-free.obj --seams free-translations --report cube-free.json --quiet
+code=$?
+check "seamcube --seams free-translations: exit 0 (code $code)" [ "$code" = 0 ]
+check "free: locally invertible" [ "$(json cube-free.json locally_invertible)" = True ]
+check "free: said so" [ "$(json cube-free.json seams)" = free-translations ]
+check "free: the same seams and rotations" [ "$(json cube-free.json seams_kept)" = True ]
+check "free: seam sides together through their new transitions to 1e-12" \
+  at_most "$(json cube-free.json max_seam_side_gap_own_transitions)" 1e-12
+check "free: no wedge fixed (the cones move)" [ "$(json cube-free.json fixed_wedges)" = 0 ]
+check "free: same OBJ layout" same_layout seamcube.obj cube-free.obj
 "$MAKE" square 4 0.3 1 square.obj > /dev/null
 "$UNTANGLE" square.obj -o s.obj --seams free-translations --quiet 2> noseam.err
 check "--seams on a file without seams: exit 2" [ $? = 2 ]

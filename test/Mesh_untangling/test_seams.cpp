@@ -6,17 +6,23 @@
 // 3 pi / 2) and a pillow (4 cones of pi), each tangled by moving interior uv
 // wedges, must end locally injective on the surface with every seam
 // transition preserved to 1e-12 and the cones in place; bad seams are
-// named by edge; a fold across a seam, invisible on the cut mesh, is caught.
+// named by edge; a fold across a seam, invisible on the cut mesh, is caught;
+// transitions given through the API replace the detection; the layout of
+// free translations keeps rotations and one translation per seam.
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
+#include <CGAL/Mesh_untangling/internal/seams/free_translations.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
+#include <CGAL/Mesh_untangling/seamless_invertibility.h>
 #include <CGAL/untangle_mesh.h>
 
 #include "seamless_generators.h"
 #include "seamless_surface.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -131,6 +137,83 @@ void check_untangles(Mesh_file m, const std::string& name, double amplitude, std
     }
 }
 
+/// Seam_translations::FREE: the map ends locally injective on the surface,
+/// nothing fixed (the cones move), every seam edge's two sides related by
+/// its rotation to 1e-12, and one translation along each seam (the chains of
+/// free_translation_layout) to 1e-12.
+void check_untangles_free(Mesh_file m, const std::string& name, double amplitude, bool translations_move)
+{
+  tools::tangle_seamless(m, amplitude, 0.5, 7);
+  const Mesh_file tangled = m;
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  const MU::Untangling_result r = CGAL::untangle_mesh(
+    s.mesh, s.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, CGAL::parameters::maximum_running_time(60.)));
+  tools::read_back_corner_map(s, m);
+  std::cout << name << " (free translations, " << r.solver << "): " << MU::to_string(r.status) << ", inverted "
+            << r.inverted_before << " -> " << r.inverted_after << ", over-wound after " << r.overwound_vertices_after << ", "
+            << r.outer_iterations << " eps steps, " << r.seconds << " s" << (r.message.empty() ? "" : ": ") << r.message << "\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, name << ": " << r.message);
+  CHECK(r.inverted_after == 0 && r.overwound_vertices_after == 0);
+  CHECK(negative_triangles(m) == 0);
+  CHECK_MESSAGE(r.number_of_fixed_vertices == 0, name << ": " << r.number_of_fixed_vertices << " fixed");
+
+  const auto before = seams_of(tangled);
+  std::vector<char> cone;
+  const auto links = MU::internal::link_wedges(before, m.rest.size(), {}, cone);
+  const auto layout = MU::internal::free_translation_layout(before, links, cone, {});
+  const auto uv = corner_uv(m);
+  std::vector<std::vector<Uv>> per_seam(layout.number_of_chains());
+  double rotation_error = 0, moved = 0;
+  for(std::size_t e = 0; e < before.seam_edges.size(); ++e) {
+    const auto& se = before.seam_edges[e];
+    const std::size_t ca = 3 * se.face + se.corner, cb = 3 * se.face + (se.corner + 1) % 3;
+    std::size_t ga = 0, gb = 0;
+    for(int k = 0; k < 3; ++k) {
+      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][ca % 3]) ga = 3 * se.opposite_face + k;
+      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][cb % 3]) gb = 3 * se.opposite_face + k;
+    }
+    using MU::internal::minus;
+    using MU::internal::norm;
+    using MU::internal::turned;
+    rotation_error = std::max(rotation_error, norm(minus(turned(se.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
+    MU::Seam_transition now{se.transition.turns, minus(uv[ga], turned(se.transition.turns, uv[ca]))};
+    moved = std::max(moved, norm(minus(now.translation, se.transition.translation)));
+    if(layout.edge_reversed[e]) now = now.inverse();
+    per_seam[layout.chain_of_edge[e]].push_back(now.translation);
+  }
+  double spread = 0;
+  for(const auto& t : per_seam)
+    for(const Uv& u : t) spread = std::max(spread, MU::internal::norm(MU::internal::minus(u, t.front())));
+  std::cout << name << " (free translations): " << layout.number_of_chains() << " seams, rotations kept to " << rotation_error
+            << ", translations one per seam to " << spread << ", moved by up to " << moved << "\n";
+  CHECK_MESSAGE(rotation_error <= 1e-12, name << ": a seam's rotation is off by " << rotation_error);
+  CHECK_MESSAGE(spread <= 1e-12, name << ": a seam's translation varies by " << spread);
+  // (the torus's square grid is not its shape: its translations must move;
+  // the cube's and pillow's grids are isometric to them, theirs barely do)
+  if(translations_move) CHECK_MESSAGE(moved > 0.1, name << ": the translations did not move (" << moved << ")");
+}
+
+/// Free translations with a fixed vertex: its corners keep their uv bit for
+/// bit (the translations around it are bound, the wedges of a fixed cone too).
+void check_free_with_fixed_vertex(Mesh_file m, const std::string& name, std::size_t fixed_vertex)
+{
+  tools::tangle_seamless(m, 1.2, 0.5, 7);
+  tools::Seamless_surface s = tools::make_seamless_surface(m);
+  using Mesh = tools::Seamless_surface::Mesh;
+  auto fixed = s.mesh.add_property_map<Mesh::Vertex_index, bool>("v:fixed", false).first;
+  fixed[Mesh::Vertex_index(fixed_vertex)] = true;
+  std::vector<std::pair<Mesh::Halfedge_index, tools::Seamless_surface::Kernel::Point_2>> corners;
+  for(auto h : s.mesh.halfedges())
+    if(!s.mesh.is_border(h) && std::size_t(s.mesh.target(h)) == fixed_vertex) corners.emplace_back(h, s.uv[h]);
+  const MU::Untangling_result r = CGAL::untangle_mesh(
+    s.mesh, s.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, CGAL::parameters::vertex_is_constrained_map(fixed)));
+  std::cout << name << " (free translations, vertex " << fixed_vertex << " fixed): " << MU::to_string(r.status) << ", "
+            << r.number_of_fixed_vertices << " fixed wedges\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, name << ": " << r.message);
+  CHECK(r.number_of_fixed_vertices > 1);
+  for(const auto& [h, uv] : corners) CHECK_MESSAGE(s.uv[h] == uv, name << ": a fixed corner moved");
+}
+
 /// A covering that only the surface's stars show: a vertex with 4 wedges
 /// (seams along every other edge of its 8 triangles, each wedge's chart
 /// translated), whose triangles are all positive but turn around it twice,
@@ -231,12 +314,247 @@ void check_bad_seams()
   CHECK(rc.status == MU::Untangling_status::INVALID_INPUT);
   CHECK(rc.message.find("seam edge") != std::string::npos || rc.message.find("cone") != std::string::npos);
 
-  // free translations: refused for now, with a message
+  // free translations with the Newton solver: refused (its pattern has one parent per vertex), the map untouched
   Mesh_file torus = tools::make_seamless_torus(4);
   tools::Seamless_surface t = tools::make_seamless_surface(torus);
-  const MU::Untangling_result rf =
-    CGAL::untangle_mesh(t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE));
-  CHECK(rf.status == MU::Untangling_status::INVALID_INPUT || rf.status == MU::Untangling_status::SUCCESS);
+  std::vector<tools::Seamless_surface::Kernel::Point_2> uv_before;   // (a property map copies a handle)
+  for(auto h : t.mesh.halfedges()) uv_before.push_back(t.uv[h]);
+  const MU::Untangling_result rf = CGAL::untangle_mesh(
+    t.mesh, t.uv, MU::parameters::seam_translations(MU::Seam_translations::FREE, MU::parameters::solver(MU::Solver::NEWTON)));
+  CHECK_MESSAGE(rf.status == MU::Untangling_status::INVALID_INPUT && rf.message.find("Newton") != std::string::npos, rf.message);
+  std::size_t i = 0;
+  for(auto h : t.mesh.halfedges()) CHECK(t.uv[h] == uv_before[i++]);
+}
+
+using Edge_transitions = tools::Seamless_surface::Mesh::Property_map<tools::Seamless_surface::Mesh::Edge_index, MU::Seam_transition>;
+
+/// The transitions `seams` found on `m`, as a user gives them: per edge of
+/// `s` (made from `m`), from the face of its halfedge to the other; the
+/// identity off the seams.
+Edge_transitions transitions_of(tools::Seamless_surface& s, const MU::internal::Seams& seams)
+{
+  auto map = s.mesh.add_property_map<tools::Seamless_surface::Mesh::Edge_index, MU::Seam_transition>("e:transition").first;
+  for(const auto& e : seams.seam_edges) {
+    const auto h = s.corner_halfedge[3 * e.face + (e.corner + 1) % 3];   // from corner `corner` to the next
+    map[s.mesh.edge(h)] = s.mesh.halfedge(s.mesh.edge(h)) == h ? e.transition : e.transition.inverse();
+  }
+  return map;
+}
+
+/// Transitions given through the API instead of read off the uv: the ones
+/// detection finds give the same run bit for bit; one that contradicts the
+/// uv is refused with its edge named; a seam edge of no length in uv, which
+/// detection refuses, is untangled when its transition is given.
+void check_given_transitions()
+{
+  Mesh_file m = tools::make_seamless_cube(4);
+  tools::tangle_seamless(m, 1.2, 0.5, 7);
+  const auto seams = seams_of(m);
+  tools::Seamless_surface detected = tools::make_seamless_surface(m), given = tools::make_seamless_surface(m);
+  const Edge_transitions transitions = transitions_of(given, seams);
+  const MU::Untangling_result rd = CGAL::untangle_mesh(detected.mesh, detected.uv);
+  const MU::Untangling_result rg = CGAL::untangle_mesh(given.mesh, given.uv, MU::parameters::seam_transitions(transitions));
+  std::cout << "given transitions: " << MU::to_string(rg.status) << ", detected: " << MU::to_string(rd.status) << "\n";
+  CHECK(rd.status == MU::Untangling_status::SUCCESS && rg.status == MU::Untangling_status::SUCCESS);
+  CHECK(rd.outer_iterations == rg.outer_iterations && rd.number_of_fixed_vertices == rg.number_of_fixed_vertices);
+  std::size_t different = 0;
+  for(auto h : detected.mesh.halfedges())
+    if(!detected.mesh.is_border(h) && detected.uv[h] != given.uv[h]) ++different;
+  CHECK_MESSAGE(different == 0, different << " corners differ between given and detected transitions");
+
+  // one seam edge's transition shifted by half a cell: refused, the edge named
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(m);
+    Edge_transitions t = transitions_of(s, seams);
+    const auto& e = seams.seam_edges[seams.seam_edges.size() / 2];
+    const auto h = s.corner_halfedge[3 * e.face + (e.corner + 1) % 3];
+    t[s.mesh.edge(h)].translation[0] += 0.5;
+    const std::size_t a = m.simplices[e.face][e.corner], b = m.simplices[e.face][(e.corner + 1) % 3];
+    const std::string name = "seam edge " + MU::internal::edge_name((std::min)(a, b), (std::max)(a, b)) + " between faces " +
+                             std::to_string(e.face) + " and " + std::to_string(e.opposite_face);
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+    std::cout << "contradicting transition: " << r.message << "\n";
+    CHECK(r.status == MU::Untangling_status::INVALID_INPUT);
+    CHECK_MESSAGE(r.message.find(name) != std::string::npos, r.message << " does not name " << name);
+    // the same map through the verdict
+    CHECK_THROWS_MESSAGE(MU::check_seamless_parameterization(s.mesh, s.uv, MU::parameters::seam_transitions(t)), name);
+  }
+  // an edge inside a chart given as a seam: refused too
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(m);
+    Edge_transitions t = transitions_of(s, seams);
+    std::size_t inside = 0;
+    for(auto e : s.mesh.edges())
+      if(!s.mesh.is_border(e) && t[e].is_identity()) { inside = std::size_t(e); break; }
+    t[tools::Seamless_surface::Mesh::Edge_index(inside)].turns = 1;
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+    CHECK_MESSAGE(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("seam edge (") != std::string::npos, r.message);
+  }
+
+  // a seam edge collapsed to a point in uv on both sides (its second vertex's
+  // wedges moved onto the first's): detection cannot tell its rotation
+  Mesh_file torus = tools::make_seamless_torus(6);
+  const auto torus_seams = seams_of(torus);
+  std::vector<int> wedges(torus.rest.size(), 0);
+  for(std::size_t v : torus_seams.vertex_of_wedge) ++wedges[v];
+  const MU::internal::Seams::Edge* collapsed = nullptr;
+  for(const auto& e : torus_seams.seam_edges)   // away from the vertex where the two seams cross
+    if(wedges[torus.simplices[e.face][e.corner]] == 2 && wedges[torus.simplices[e.face][(e.corner + 1) % 3]] == 2) {
+      collapsed = &e;
+      break;
+    }
+  CHECK(collapsed != nullptr);
+  if(collapsed == nullptr) return;
+  for(std::size_t f : {collapsed->face, collapsed->opposite_face}) {
+    const std::size_t a = torus.simplices[collapsed->face][collapsed->corner];
+    const std::size_t b = torus.simplices[collapsed->face][(collapsed->corner + 1) % 3];
+    int ia = 0, ib = 0;
+    for(int i = 0; i < 3; ++i) {
+      if(torus.simplices[f][i] == a) ia = i;
+      if(torus.simplices[f][i] == b) ib = i;
+    }
+    torus.corner_map[torus.simplex_corner_map[f][ib]] = torus.corner_map[torus.simplex_corner_map[f][ia]];
+  }
+  {
+    tools::Seamless_surface s = tools::make_seamless_surface(torus);
+    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv);
+    std::cout << "collapsed seam edge, detected: " << r.message << "\n";
+    CHECK_MESSAGE(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("no length") != std::string::npos, r.message);
+  }
+  tools::Seamless_surface s = tools::make_seamless_surface(torus);
+  const Edge_transitions t = transitions_of(s, torus_seams);
+  const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
+  std::cout << "collapsed seam edge, given: " << MU::to_string(r.status) << ", inverted " << r.inverted_before << " -> "
+            << r.inverted_after << (r.message.empty() ? "" : ": ") << r.message << "\n";
+  CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, r.message);
+  CHECK(r.inverted_before > 0 && r.inverted_after == 0);
+  Mesh_file after = torus;
+  tools::read_back_corner_map(s, after);
+  CHECK(negative_triangles(after) == 0);
+  check_transitions_kept(tools::make_seamless_torus(6), after, "collapsed seam edge");
+}
+
+/// A fan of 6 triangles around vertex 0 cut into three charts, turned by one,
+/// one and two quarter turns: a vertex where three seams meet that is no
+/// cone, so the seams' translations are bound by its closure.
+Mesh_file three_seam_fan()
+{
+  const double pi = std::acos(-1.);
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.rest_dimension = 3;
+  m.rest.push_back({0, 0, 0});
+  for(int k = 0; k < 6; ++k) m.rest.push_back({std::cos(k * pi / 3), std::sin(k * pi / 3), 0});
+  const MU::Seam_transition chart[3] = {{0, {0., 0.}}, {1, {5., 0.}}, {2, {0., 7.}}};
+  for(int k = 0; k < 6; ++k) {
+    const std::array<std::size_t, 3> t{0, std::size_t(1 + k), std::size_t(1 + (k + 1) % 6)};
+    m.simplices.push_back({t[0], t[1], t[2], 0});
+    std::array<std::size_t, 4> corners{0, 0, 0, 0};
+    for(int i = 0; i < 3; ++i) {
+      const Uv uv = chart[k / 2](Uv{m.rest[t[i]][0], m.rest[t[i]][1]});
+      corners[i] = m.corner_map.size();
+      m.corner_map.push_back({uv[0], uv[1], 0});
+    }
+    m.simplex_corner_map.push_back(corners);
+  }
+  return m;
+}
+
+/// The wedges as functions of the representatives and the seams'
+/// translations (Seam_translations::FREE's layout, not offered yet): the
+/// input at z = 0 bit for bit; for any z every seam keeps its rotation to
+/// 1e-12, its translation is one along the seam and the one the layout
+/// says, the transitions close around every vertex (the detection reads the
+/// moved map without complaint) and the cones move with the translations.
+void check_free_translation_layout()
+{
+  std::srand(11);
+  const auto random = [] { return double(std::rand()) / RAND_MAX - 0.5; };
+  for(const auto& [name, m, chains, unknowns] :
+      {std::tuple(std::string("torus"), tools::make_seamless_torus(6), 2, 4),
+       std::tuple(std::string("cube"), tools::make_seamless_cube(3), 12, 24),
+       std::tuple(std::string("pillow"), tools::make_seamless_pillow(4), 4, 8),
+       std::tuple(std::string("three seams"), three_seam_fan(), 3, 4)}) {
+    const auto seams = seams_of(m);
+    std::vector<char> cone;
+    const auto links = MU::internal::link_wedges(seams, m.rest.size(), {}, cone);
+    const auto layout = MU::internal::free_translation_layout(seams, links, cone, {});
+    std::cout << name << ": " << seams.seam_edges.size() << " seam edges, " << layout.number_of_chains() << " seams, "
+              << layout.number_of_unknowns() << " translation unknowns\n";
+    CHECK_MESSAGE(int(layout.number_of_chains()) == chains && int(layout.number_of_unknowns()) == unknowns,
+                  name << ": " << layout.number_of_chains() << " seams, " << layout.number_of_unknowns() << " unknowns");
+    std::vector<Uv> keep = seams.wedge_uv;
+    for(std::size_t w = 0; w < keep.size(); ++w)
+      if(links.representative[w] != w)
+        keep[w] = MU::internal::plus(MU::internal::turned(links.turns[w], keep[links.representative[w]]), links.translation[w]);
+    CHECK(layout.positions(links, keep, Eigen::VectorXd::Zero(layout.number_of_unknowns())) == keep);
+
+    Eigen::VectorXd z(layout.number_of_unknowns());
+    for(Eigen::Index i = 0; i < z.size(); ++i) z[i] = random();
+    const std::vector<Uv> x = layout.positions(links, keep, z);
+    std::vector<Uv> uv(3 * m.simplices.size());
+    for(std::size_t c = 0; c < uv.size(); ++c) uv[c] = x[seams.wedge_of_corner[c]];
+    const Eigen::VectorXd tau_change = layout.basis * z;
+    double rotation_error = 0, translation_error = 0;
+    for(std::size_t e = 0; e < seams.seam_edges.size(); ++e) {
+      const auto& s = seams.seam_edges[e];
+      const std::size_t ca = 3 * s.face + s.corner, cb = 3 * s.face + (s.corner + 1) % 3;
+      std::size_t ga = 0, gb = 0;
+      for(int i = 0; i < 3; ++i) {
+        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][ca % 3]) ga = 3 * s.opposite_face + i;
+        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][cb % 3]) gb = 3 * s.opposite_face + i;
+      }
+      using MU::internal::minus;
+      using MU::internal::norm;
+      using MU::internal::turned;
+      rotation_error = std::max(rotation_error, norm(minus(turned(s.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
+      MU::Seam_transition moved{s.transition.turns, minus(uv[ga], turned(s.transition.turns, uv[ca]))};
+      if(layout.edge_reversed[e]) moved = moved.inverse();
+      const std::size_t j = layout.chain_of_edge[e];
+      const Uv expected{layout.chain_translation[j][0] + tau_change[2 * j], layout.chain_translation[j][1] + tau_change[2 * j + 1]};
+      translation_error = std::max(translation_error, norm(minus(moved.translation, expected)));
+    }
+    std::cout << name << ": rotations kept to " << rotation_error << ", translations one per seam to " << translation_error << "\n";
+    CHECK_MESSAGE(rotation_error <= 1e-12, name << ": a rotation is off by " << rotation_error);
+    CHECK_MESSAGE(translation_error <= 1e-12, name << ": a translation is off by " << translation_error);
+    CHECK_MESSAGE(tau_change.norm() > 0.1, name << ": the translations did not move");
+    std::vector<char> moved_cone;
+    try {
+      MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), uv), m.rest.size(), {}, moved_cone);
+      CHECK(moved_cone == cone);
+    } catch(const std::exception& e) {
+      CHECK_MESSAGE(false, name << ": the moved map's seams are refused: " << e.what());
+    }
+    double cone_motion = 0;
+    for(std::size_t w = 0; w < x.size(); ++w)
+      if(cone[seams.vertex_of_wedge[w]]) cone_motion = std::max(cone_motion, MU::internal::norm(MU::internal::minus(x[w], keep[w])));
+    CHECK_MESSAGE((cone_motion > 1e-3) == (std::count(cone.begin(), cone.end(), 1) > 0), name << ": cones moved by " << cone_motion);
+
+    // the translations moved without the closure's null space: at the fan's
+    // centre they no longer compose to zero, and the seam that closes the
+    // fan is no longer one (the detection refuses it)
+    if(name == "three seams") {
+      MU::internal::Free_translation_layout unbound = layout;
+      unbound.basis = Eigen::MatrixXd::Identity(2 * chains, 2 * chains);
+      unbound.terms.assign(keep.size(), {});
+      for(std::size_t w = 0; w < keep.size(); ++w) {
+        std::vector<std::size_t> path;   // the seams crossed from the representative, in the layout's own terms
+        MU::internal::Symbolic_transition t;
+        for(std::size_t u = w; links.tree_parent[u] != u; u = links.tree_parent[u]) path.push_back(u);
+        for(auto it = path.rbegin(); it != path.rend(); ++it)
+          t = MU::internal::symbolic_edge(unbound, links.tree_edge[*it], links.tree_forward[*it] != 0).after(t);
+        for(const auto& [j, mat] : t.terms)
+          for(int c = 0; c < 2; ++c) unbound.terms[w].emplace_back(2 * j + c, Eigen::Vector2d(mat.col(c)));
+      }
+      Eigen::VectorXd one = Eigen::VectorXd::Zero(2 * chains);
+      one[0] = 0.5;
+      const std::vector<Uv> y = unbound.positions(links, keep, one);
+      std::vector<Uv> broken(uv.size());
+      for(std::size_t c = 0; c < uv.size(); ++c) broken[c] = y[seams.wedge_of_corner[c]];
+      CHECK_THROWS(MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), broken),
+                                             m.rest.size(), {}, moved_cone));
+    }
+  }
 }
 
 void check_obj_round_trip()
@@ -259,12 +577,19 @@ int main()
   try {
     check_obj_round_trip();
     check_bad_seams();
+    check_given_transitions();
+    check_free_translation_layout();
     check_covering_across_seams();
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0, MU::Solver::LBFGS);
     check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24);
     check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24, MU::Solver::LBFGS);
     check_untangles(tools::make_seamless_pillow(6), "pillow", 1.2, 8);
+    check_untangles_free(tools::make_seamless_torus(12), "torus", 1.2, true);
+    check_untangles_free(tools::make_seamless_cube(5), "cube", 1.2, false);
+    check_untangles_free(tools::make_seamless_pillow(6), "pillow", 1.2, false);
+    check_free_with_fixed_vertex(tools::make_seamless_torus(12), "torus", 0);
+    check_free_with_fixed_vertex(tools::make_seamless_cube(5), "cube", 0);
   } catch(const std::exception& e) {
     std::cerr << "unexpected exception: " << e.what() << "\n";
     return 1;

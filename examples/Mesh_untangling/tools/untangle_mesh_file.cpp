@@ -521,21 +521,28 @@ Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after)
     s.max_translation_change = (std::max)(s.max_translation_change, MU::internal::norm(MU::internal::minus(
                                                                         x.transition.translation, y.transition.translation)));
   }
-  // the sides of every seam edge of `after`, through the transition `before` had
-  for(const auto& e : a.seam_edges) {
-    const auto& f = after.simplices[e.face];
-    const auto& g = after.simplices[e.opposite_face];
-    for(int end = 0; end < 2; ++end) {
-      const int c = (e.corner + end) % 3;
-      const auto& p = after.corner_map[after.simplex_corner_map[e.face][c]];
-      for(int i = 0; i < 3; ++i)
-        if(g[i] == f[c]) {
-          const auto& q = after.corner_map[after.simplex_corner_map[e.opposite_face][i]];
-          const MU::internal::Uv image = e.transition({p[0], p[1]});
-          s.max_side_gap = (std::max)(s.max_side_gap, MU::internal::norm(MU::internal::minus(image, {q[0], q[1]})));
-        }
+  // the sides of every seam edge of `after`, through the transition `before`
+  // had (the translations kept) and through its own (the rotations kept)
+  const auto side_gap = [&after](const MU::internal::Seams& seams) {
+    double gap = 0;
+    for(const auto& e : seams.seam_edges) {
+      const auto& f = after.simplices[e.face];
+      const auto& g = after.simplices[e.opposite_face];
+      for(int end = 0; end < 2; ++end) {
+        const int c = (e.corner + end) % 3;
+        const auto& p = after.corner_map[after.simplex_corner_map[e.face][c]];
+        for(int i = 0; i < 3; ++i)
+          if(g[i] == f[c]) {
+            const auto& q = after.corner_map[after.simplex_corner_map[e.opposite_face][i]];
+            const MU::internal::Uv image = e.transition({p[0], p[1]});
+            gap = (std::max)(gap, MU::internal::norm(MU::internal::minus(image, {q[0], q[1]})));
+          }
+      }
     }
-  }
+    return gap;
+  };
+  s.max_side_gap = side_gap(a);
+  s.max_own_side_gap = side_gap(b);
   return s;
 }
 

@@ -109,7 +109,8 @@ struct Seam_summary
   std::size_t seam_edges = 0, wedges = 0, cones = 0;
   bool same_seams = true;              ///< the same seam edges, with the same rotations
   double max_translation_change = 0;   ///< uv units
-  double max_side_gap = 0;             ///< in `after`, uv units
+  double max_side_gap = 0;             ///< in `after` through `before`'s transitions, uv units
+  double max_own_side_gap = 0;         ///< in `after` through its own transitions (free translations), uv units
 };
 /// Throws Invalid_problem when a seam of either is not a transition.
 Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after);

@@ -34,6 +34,7 @@ enum mesh_untangling_refinement_t { mesh_untangling_refinement };
 enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
+enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -121,8 +122,12 @@ enum class Seam_translations
   /// every cone (a vertex whose transitions compose to a rotation) is the
   /// centre of that rotation, so it stays where it is
   KEEP,
-  /// each seam's translation is an unknown too: the seams slide along each
-  /// other, cones move
+  /// each seam's translation (one per chain of seam edges, bound where
+  /// three seams meet) is an unknown too: the seams slide along each other
+  /// and the cones, centres of their transitions' rotations, move with them.
+  /// Solved by L-BFGS (`Solver::NEWTON` is refused); the translations
+  /// move once the map is valid (they relax it, they do not untangle it),
+  /// and the map is no integer-grid map any more
   FREE
 };
 
@@ -221,6 +226,13 @@ CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
 /// across seams are kept (default) or free, for the seamless overload of
 /// `CGAL::untangle_mesh()` (halfedge uv map) only.
 CGAL_MESH_UNTANGLING_PARAMETER(seam_translations, mesh_untangling_seam_translations_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A readable property map edge -> `CGAL::Mesh_untangling::Seam_transition`:
+/// the transition across every edge, used instead of reading it off the uv
+/// (the seamless overload of `CGAL::untangle_mesh()` only).  The transition
+/// of `e` maps the uv in `face(halfedge(e, tm), tm)` to the uv in the face of
+/// its opposite; an edge whose transition is not the identity is a seam.
+CGAL_MESH_UNTANGLING_PARAMETER(seam_transitions, mesh_untangling_seam_transitions_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// `std::size_t` >= 1: the largest number of vertices the refinement may add
 /// (default `default_refinement_budget`).

@@ -32,10 +32,14 @@ namespace Mesh_untangling {
 ///   \cgalParamNBegin{vertex_point_map, vertex_is_constrained_map}
 ///     \cgalParamDescription{as for `CGAL::untangle_mesh()` (defects with fixed vertices only are input defects)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::seam_transitions}
+///     \cgalParamDescription{as for `CGAL::untangle_mesh()`: the transitions given instead of read off the uv}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument naming the edge when a seam's sides are not
-/// related by a rotation by a multiple of 90 degrees and a translation.
+/// related by a rotation by a multiple of 90 degrees and a translation (or
+/// by the transition given).
 template <typename TriangleMesh, typename HalfedgeUVMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Invertibility_report check_seamless_parameterization(const TriangleMesh& tm, const HalfedgeUVMap& uv,
                                                      const NamedParameters& np = CGAL::parameters::default_values())
@@ -46,9 +50,10 @@ Invertibility_report check_seamless_parameterization(const TriangleMesh& tm, con
                                         get_const_property_map(vertex_point, tm));
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, false>());
+  const auto transitions = get_parameter(np, internal_np::mesh_untangling_seam_transitions);
   TriangleMesh& mesh = const_cast<TriangleMesh&>(tm);   // (the adaptor only reads it here)
   internal::Seamless_face_graph_adaptor<TriangleMesh> adaptor(mesh);
-  const internal::Untangling_input<2> in = adaptor.make_input(uv, surface, fixed, Seam_translations::KEEP);
+  const internal::Untangling_input<2> in = adaptor.make_input(uv, surface, fixed, Seam_translations::KEEP, transitions);
   if(!adaptor.error().empty()) throw std::invalid_argument(adaptor.error());
   Invertibility_report report = internal::check_mesh<2>(in, internal::target_orientations<2>(in));
   for(auto* ids : {&report.overwound_vertex_ids, &report.input_defect_vertex_ids}) {

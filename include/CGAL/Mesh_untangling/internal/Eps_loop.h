@@ -97,6 +97,9 @@ struct Eps_loop_outcome
 /// hands a valid map to the next one) as soon as every element is positive.
 enum class Eps_loop_goal { SETTLED_ENERGY, VALID_MAP };
 
+/// The eps below which free seam translations move (see Eps_loop::run).
+constexpr double free_parameters_epsilon = 1e-3;
+
 /// When an eps loop gives up untangling ("stalls").
 enum class Stall_test
 {
@@ -190,6 +193,12 @@ public:
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
       const bool valid = summary.min_det > 0;
+      // Free seam translations (Vertex_links.h) with nothing fixed let the
+      // whole map shrink, which a large eps rewards (a flat triangle costs
+      // less than its target's shape: on torus 24 released at eps 0.2 the map
+      // collapsed to 710 inverted triangles).  They wait for a valid map and
+      // a small eps, where shrinking costs size energy instead.
+      if(P.links.has_parents()) P.links.hold_parameters = !(valid && eps <= free_parameters_epsilon);
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? polish_tolerance_ : 1e-4)
                : LBFGS_solver<d>(lbfgs_algebra()).minimize(P, eps, theta_, inner_iterations(valid),
@@ -213,9 +222,11 @@ public:
       if(options_.callback && !options_.callback(info)) { out.stopped = true; break; }
       // Newton's end is a converged solve from a valid map (the published
       // test on the energy change would stop it after a loose tangled-phase solve).
-      const bool settled = goal == Eps_loop_goal::VALID_MAP ? summary.min_det > 0
-                         : newton ? valid && inner.converged && summary.min_det > 0
-                                  : energy_settled(E, E_prev, summary.min_det);
+      // (held translations, see above: not settled before they have moved)
+      const bool settled = (!P.links.has_parents() || !P.links.hold_parameters) &&
+                           (goal == Eps_loop_goal::VALID_MAP ? summary.min_det > 0
+                            : newton ? valid && inner.converged && summary.min_det > 0
+                                     : energy_settled(E, E_prev, summary.min_det));
       if(settled) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }
@@ -227,9 +238,14 @@ public:
       }
       // Below tiny_epsilon the energy of a flat element overflows long before
       // it helps: the floor keeps the problem numerically solvable.
-      const double next_eps =
+      double next_eps =
         std::min(eps_cap, newton ? adaptive.next(eps, E, E_prev, summary.min_det, inner.iterations, inner.converged)
                                  : std::max(next_epsilon(eps, E, E_prev, summary.min_det), tiny_epsilon));
+      // Held translations move at a small eps, not at the tiny one L-BFGS
+      // jumps to from a valid map (where its line search barely moves:
+      // 2 iterations on torus 24): eps comes down to a tenth of that bound.
+      if(P.links.has_parents() && P.links.hold_parameters && summary.min_det > 0)
+        next_eps = std::max(next_eps, std::min(eps, free_parameters_epsilon) / 10);
       // A step that moved nothing, at an eps that stays, is followed by the
       // same: at the eps floor, with phantoms that no valid map of the mesh
       // satisfies, runs went on with 5,000 such steps (free-boundary bars and

@@ -614,6 +614,9 @@ void hold_vertices_in_no_element(const Untangling_input<d>& in, Untangling_probl
   std::vector<char> used(P.number_of_vertices, 0);
   for(const auto& e : in.elements)
     for(std::size_t v : e) used[v] = 1;
+  if(in.links.has_parents())   // (the seams' translations: in no element, but unknowns)
+    for(const auto& parents : in.links.parents)
+      for(const auto& parent : parents) used[parent.first] = 1;
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
     if(!used[v] && !P.is_fixed[v]) P.is_fixed[v] = 2;
 }

@@ -99,7 +99,12 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
                                              const WriteBack& write_back, ConcurrencyTag = ConcurrencyTag())
 {
   using CGAL::parameters::get_parameter;
-  const Untangling_options options = read_options(np);
+  Untangling_options options = read_options(np);
+  if(input.links.has_parents()) {   // (free seam translations: the Newton solver's pattern has one parent per vertex)
+    if(options.solver == Solver::NEWTON)
+      options.invalid_parameter = "the Newton solver does not take free seam translations: use Solver::LBFGS or AUTOMATIC";
+    options.solver = Solver::LBFGS;
+  }
   const Protection_request<d> protection = read_protection<d>(np, index_of);
   constexpr bool wants_phantoms = is_given_parameter<NamedParameters, internal_np::mesh_untangling_phantom_output_t>();
   constexpr bool wants_figures =

@@ -76,9 +76,10 @@ template <int d>
 void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>& in)
 {
   for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!P.is_fixed[v] && !in.links.is_linked(v)) in.positions[v] = P.to_user(P.point(v));
+    if(!P.is_fixed[v] && !in.links.is_dependent(v)) in.positions[v] = P.to_user(P.point(v));
+  const auto position = [&in](std::size_t u) { return in.positions[u]; };
   for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!P.is_fixed[v] && in.links.is_linked(v)) in.positions[v] = in.links.image(v, in.positions[in.links.representative[v]]);
+    if(!P.is_fixed[v] && in.links.is_dependent(v)) in.positions[v] = in.links.image_of(v, position);
 }
 
 /// Stage 0: the given targets, after the published scheme's trial where

@@ -7,9 +7,13 @@
 // and a translation), and each wedge as the image of its vertex's
 // representative wedge.  No numerics beyond that; readers use it to name
 // the file line of a bad seam, the front end to make the links
-// (Vertex_links.h).  Plain C++17 (the file-format layer includes it).
+// (Vertex_links.h).  The transitions may also be given (the user's
+// Seam_transition per edge) rather than read off the uv.  Plain C++17 (the
+// file-format layer includes it).
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAM_LAYOUT_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_SEAMS_SEAM_LAYOUT_H
+
+#include <CGAL/Mesh_untangling/Seam_transition.h>
 
 #include <algorithm>
 #include <array>
@@ -52,21 +56,6 @@ struct Seam_error : std::invalid_argument
   Seam_error(std::size_t f, const std::string& what) : std::invalid_argument(what), face(f) {}
 };
 
-/// uv' = Q^turns uv + translation: from one side of a seam edge to the other.
-struct Seam_transition
-{
-  int turns = 0;
-  Uv translation{0., 0.};
-
-  Uv operator()(const Uv& p) const { return plus(turned(turns, p), translation); }
-  Seam_transition inverse() const { return {-turns, turned(-turns, Uv{-translation[0], -translation[1]})}; }
-  /// this after `first`
-  Seam_transition after(const Seam_transition& first) const
-  {
-    return {turns + first.turns, plus(turned(turns, first.translation), translation)};
-  }
-};
-
 /// What detect_seams() finds on a triangle surface with per-corner uv.
 struct Seams
 {
@@ -93,12 +82,22 @@ inline std::string edge_name(std::size_t a, std::size_t b)
 /// faces when they are not, when an edge has no length in uv (its rotation
 /// is then unknown), or when an edge is shared by more than two faces or by
 /// two faces of opposite orientations.
+///
+/// When `given` is not empty, it holds the transitions instead:
+/// `given[3 f + i]` maps the uv of face f across its edge from corner i to
+/// corner i + 1 to the uv of the face on the other side.  An edge whose
+/// given transition is not the identity is a seam (even one with no length
+/// in uv); the uv of its two sides must agree through it within the same
+/// tolerance, at both ends, else Seam_error names the edge and faces.
 inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 3>>& triangles,
-                          const std::vector<Uv>& corner_uv, double relative_tolerance = 1e-6)
+                          const std::vector<Uv>& corner_uv, double relative_tolerance = 1e-6,
+                          const std::vector<Seam_transition>& given = {})
 {
   const std::size_t m = triangles.size();
   if(corner_uv.size() != 3 * m)
     throw std::invalid_argument(std::to_string(corner_uv.size()) + " corner uv for " + std::to_string(m) + " triangles");
+  if(!given.empty() && given.size() != 3 * m)
+    throw std::invalid_argument(std::to_string(given.size()) + " given seam transitions for " + std::to_string(m) + " triangles");
   Seams seams;
   Uv lo{0., 0.}, hi = lo;
   for(std::size_t c = 0; c < corner_uv.size(); ++c) {
@@ -141,6 +140,23 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
     const std::size_t f = c / 3, g = twin->second / 3;
     const std::size_t ca = c, cb = 3 * f + (c % 3 + 1) % 3;                 // a, b in f
     const std::size_t gb = twin->second, ga = 3 * g + (gb % 3 + 1) % 3;   // b, a in g
+    const std::string between = edge_name(a, b) + " between faces " + std::to_string(f) + " and " + std::to_string(g);
+    if(!given.empty()) {
+      const Seam_transition& t = given[c];
+      const double miss = (std::max)(norm(minus(t(corner_uv[ca]), corner_uv[ga])), norm(minus(t(corner_uv[cb]), corner_uv[gb])));
+      if(!(miss <= tolerance))
+        throw Seam_error(f, (t.is_identity() ? "edge " : "seam edge ") + between + ": its two sides in uv are " +
+                              std::to_string(miss) + " apart through the given transition (" + std::to_string(t.turns) +
+                              " quarter turns, translation (" + std::to_string(t.translation[0]) + ", " +
+                              std::to_string(t.translation[1]) + "))");
+      if(t.is_identity()) {
+        parent[find(ca)] = find(ga);
+        parent[find(cb)] = find(gb);
+      } else {
+        seams.seam_edges.push_back({f, g, int(ca % 3), t});
+      }
+      continue;
+    }
     const Uv ef = minus(corner_uv[cb], corner_uv[ca]), eg = minus(corner_uv[gb], corner_uv[ga]);
     if((std::max)(norm(ef), norm(eg)) <= 2 * tolerance) {
       if(norm(minus(corner_uv[ga], corner_uv[ca])) <= tolerance) {   // a collapsed edge, on one chart
@@ -213,6 +229,20 @@ struct Wedge_links
   std::vector<int> turns;
   std::vector<Uv> translation;
   std::vector<double> angle;   // per representative: the angle sum prescribed; -1 on the boundary
+
+  // How each wedge was reached from its representative, so that the same
+  // path can be composed with other translations (free_translations.h): the
+  // wedge before it (itself for a representative), the seam edge crossed
+  // (an index into Seams::seam_edges) and whether that edge's transition
+  // was applied (1) or its inverse (0); `order` lists every wedge after the
+  // one before it.
+  std::vector<std::size_t> tree_parent, tree_edge, order;
+  std::vector<char> tree_forward;
+  /// A closing arc around `vertex`: the transitions from its representative
+  /// to `from`, across `edge` (forward or not) to `to`, and back from `to`
+  /// make its holonomy.
+  struct Loop { std::size_t vertex, from, to, edge; bool forward; };
+  std::vector<Loop> loops;
 };
 
 /// The links of the wedges of `seams`: per surface vertex, its representative
@@ -240,9 +270,14 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
   cone.assign(number_of_vertices, 0);
   // the seam edges as arcs between wedges of one vertex, all in one sense
   // around it (from the face after the seam to the one before, counterclockwise)
-  struct Arc { std::size_t from, to; Seam_transition t; std::size_t face; };
+  struct Arc { std::size_t from, to; Seam_transition t; std::size_t face, edge; bool forward; };
   std::vector<std::vector<Arc>> arcs(n);
-  for(const auto& e : seams.seam_edges) {
+  links.tree_parent.resize(n);
+  std::iota(links.tree_parent.begin(), links.tree_parent.end(), std::size_t(0));
+  links.tree_edge.assign(n, std::size_t(-1));
+  links.tree_forward.assign(n, 1);
+  for(std::size_t edge = 0; edge < seams.seam_edges.size(); ++edge) {
+    const auto& e = seams.seam_edges[edge];
     const std::size_t ca = 3 * e.face + e.corner, cb = 3 * e.face + (e.corner + 1) % 3;
     // in the opposite face g, a follows b
     std::size_t ga = 0, gb = 0;
@@ -251,8 +286,8 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
       if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[ca]]) ga = c;
       if(seams.vertex_of_wedge[seams.wedge_of_corner[c]] == seams.vertex_of_wedge[seams.wedge_of_corner[cb]]) gb = c;
     }
-    const Arc at_a{seams.wedge_of_corner[ca], seams.wedge_of_corner[ga], e.transition, e.face};
-    const Arc at_b{seams.wedge_of_corner[gb], seams.wedge_of_corner[cb], e.transition.inverse(), e.face};
+    const Arc at_a{seams.wedge_of_corner[ca], seams.wedge_of_corner[ga], e.transition, e.face, edge, true};
+    const Arc at_b{seams.wedge_of_corner[gb], seams.wedge_of_corner[cb], e.transition.inverse(), e.face, edge, false};
     for(const Arc& arc : {at_a, at_b}) {
       arcs[arc.from].push_back(arc);
       if(arc.to != arc.from) arcs[arc.to].push_back(arc);
@@ -270,20 +305,30 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
     std::vector<std::size_t> queue{root};
     seen[root] = 1;
     links.representative[root] = root;
+    links.order.push_back(root);
     for(std::size_t q = 0; q < queue.size(); ++q) {
       const std::size_t u = queue[q];
       for(const Arc& arc : arcs[u]) {
         const std::size_t other = arc.from == u ? arc.to : arc.from;
         const Seam_transition step = arc.from == u ? arc.t : arc.t.inverse();
         const Seam_transition reached = step.after(transition[u]);
+        const bool forward = (arc.from == u) == arc.forward;
         if(!seen[other]) {
           seen[other] = 1;
           transition[other] = reached;
           links.representative[other] = root;
+          links.tree_parent[other] = u;
+          links.tree_edge[other] = arc.edge;
+          links.tree_forward[other] = forward;
+          links.order.push_back(other);
           queue.push_back(other);
           continue;
         }
         if(arc.from != u) continue;   // each closing arc once
+        // (an arc that reached a wedge is met again from its other end: not a loop)
+        const bool tree_arc = (links.tree_parent[other] == u && links.tree_edge[other] == arc.edge) ||
+                              (links.tree_parent[u] == other && links.tree_edge[u] == arc.edge);
+        if(!tree_arc) links.loops.push_back({v, u, other, arc.edge, forward});
         // the loop root -> u -> other -> root: the holonomy
         const Seam_transition loop = transition[other].inverse().after(reached);
         const int turns = ((loop.turns % 4) + 4) % 4;
