@@ -56,6 +56,30 @@ MU::internal::Seams seams_of(const Mesh_file& m)
   return MU::internal::detect_seams(m.rest.size(), triangles(m), corner_uv(m));
 }
 
+/// A seam edge of `m` as the corner map `uv` has it: how far its two sides
+/// are from being related by its rotation, and the transition (its
+/// rotation, the translation the sides now make) from its face to the other.
+struct Seam_edge_now
+{
+  double rotation_error;
+  MU::Seam_transition transition;
+};
+
+Seam_edge_now measure_seam_edge(const Mesh_file& m, const MU::internal::Seams::Edge& se, const std::vector<Uv>& uv)
+{
+  using MU::internal::minus;
+  using MU::internal::norm;
+  using MU::internal::turned;
+  const std::size_t ca = 3 * se.face + se.corner, cb = 3 * se.face + (se.corner + 1) % 3;
+  std::size_t ga = 0, gb = 0;
+  for(int k = 0; k < 3; ++k) {
+    if(m.simplices[se.opposite_face][k] == m.simplices[se.face][ca % 3]) ga = 3 * se.opposite_face + k;
+    if(m.simplices[se.opposite_face][k] == m.simplices[se.face][cb % 3]) gb = 3 * se.opposite_face + k;
+  }
+  return {norm(minus(turned(se.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))),
+          MU::Seam_transition{se.transition.turns, minus(uv[ga], turned(se.transition.turns, uv[ca]))}};
+}
+
 /// Triangles negative in their chart (floating orientation; the result's own verdict is exact).
 std::size_t negative_triangles(const Mesh_file& m)
 {
@@ -166,18 +190,10 @@ void check_untangles_free(Mesh_file m, const std::string& name, double amplitude
   double rotation_error = 0, moved = 0;
   for(std::size_t e = 0; e < before.seam_edges.size(); ++e) {
     const auto& se = before.seam_edges[e];
-    const std::size_t ca = 3 * se.face + se.corner, cb = 3 * se.face + (se.corner + 1) % 3;
-    std::size_t ga = 0, gb = 0;
-    for(int k = 0; k < 3; ++k) {
-      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][ca % 3]) ga = 3 * se.opposite_face + k;
-      if(m.simplices[se.opposite_face][k] == m.simplices[se.face][cb % 3]) gb = 3 * se.opposite_face + k;
-    }
-    using MU::internal::minus;
-    using MU::internal::norm;
-    using MU::internal::turned;
-    rotation_error = std::max(rotation_error, norm(minus(turned(se.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
-    MU::Seam_transition now{se.transition.turns, minus(uv[ga], turned(se.transition.turns, uv[ca]))};
-    moved = std::max(moved, norm(minus(now.translation, se.transition.translation)));
+    const Seam_edge_now measured = measure_seam_edge(m, se, uv);
+    rotation_error = std::max(rotation_error, measured.rotation_error);
+    MU::Seam_transition now = measured.transition;
+    moved = std::max(moved, MU::internal::norm(MU::internal::minus(now.translation, se.transition.translation)));
     if(layout.edge_reversed[e]) now = now.inverse();
     per_seam[layout.chain_of_edge[e]].push_back(now.translation);
   }
@@ -214,6 +230,19 @@ void check_free_with_fixed_vertex(Mesh_file m, const std::string& name, std::siz
   for(const auto& [h, uv] : corners) CHECK_MESSAGE(s.uv[h] == uv, name << ": a fixed corner moved");
 }
 
+/// The rest of a flat fan: vertex 0 at the origin, vertices 1 to n on the
+/// unit circle (the triangles and their uv are the caller's).
+Mesh_file flat_fan_rest(int n)
+{
+  const double pi = std::acos(-1.);
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.rest_dimension = 3;
+  m.rest.push_back({0, 0, 0});
+  for(int k = 0; k < n; ++k) m.rest.push_back({std::cos(2 * k * pi / n), std::sin(2 * k * pi / n), 0});
+  return m;
+}
+
 /// A covering that only the surface's stars show: a vertex with 4 wedges
 /// (seams along every other edge of its 8 triangles, each wedge's chart
 /// translated), whose triangles are all positive but turn around it twice,
@@ -222,11 +251,7 @@ void check_free_with_fixed_vertex(Mesh_file m, const std::string& name, std::siz
 void check_covering_across_seams()
 {
   const double pi = std::acos(-1.);
-  Mesh_file m;
-  m.simplex_size = 3;
-  m.rest_dimension = 3;
-  m.rest.push_back({0, 0, 0});
-  for(int k = 0; k < 8; ++k) m.rest.push_back({std::cos(k * pi / 4), std::sin(k * pi / 4), 0});
+  Mesh_file m = flat_fan_rest(8);
   for(int j = 0; j < 4; ++j) {   // wedge j: triangles 2 j, 2 j + 1, its chart shifted by 10 j
     const std::size_t centre = m.corner_map.size();
     m.corner_map.push_back({10. * j, 0, 0});
@@ -439,12 +464,7 @@ void check_given_transitions()
 /// cone, so the seams' translations are bound by its closure.
 Mesh_file three_seam_fan()
 {
-  const double pi = std::acos(-1.);
-  Mesh_file m;
-  m.simplex_size = 3;
-  m.rest_dimension = 3;
-  m.rest.push_back({0, 0, 0});
-  for(int k = 0; k < 6; ++k) m.rest.push_back({std::cos(k * pi / 3), std::sin(k * pi / 3), 0});
+  Mesh_file m = flat_fan_rest(6);
   const MU::Seam_transition chart[3] = {{0, {0., 0.}}, {1, {5., 0.}}, {2, {0., 7.}}};
   for(int k = 0; k < 6; ++k) {
     const std::array<std::size_t, 3> t{0, std::size_t(1 + k), std::size_t(1 + (k + 1) % 6)};
@@ -497,22 +517,13 @@ void check_free_translation_layout()
     const Eigen::VectorXd tau_change = layout.basis * z;
     double rotation_error = 0, translation_error = 0;
     for(std::size_t e = 0; e < seams.seam_edges.size(); ++e) {
-      const auto& s = seams.seam_edges[e];
-      const std::size_t ca = 3 * s.face + s.corner, cb = 3 * s.face + (s.corner + 1) % 3;
-      std::size_t ga = 0, gb = 0;
-      for(int i = 0; i < 3; ++i) {
-        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][ca % 3]) ga = 3 * s.opposite_face + i;
-        if(m.simplices[s.opposite_face][i] == m.simplices[s.face][cb % 3]) gb = 3 * s.opposite_face + i;
-      }
-      using MU::internal::minus;
-      using MU::internal::norm;
-      using MU::internal::turned;
-      rotation_error = std::max(rotation_error, norm(minus(turned(s.transition.turns, minus(uv[cb], uv[ca])), minus(uv[gb], uv[ga]))));
-      MU::Seam_transition moved{s.transition.turns, minus(uv[ga], turned(s.transition.turns, uv[ca]))};
+      const Seam_edge_now measured = measure_seam_edge(m, seams.seam_edges[e], uv);
+      rotation_error = std::max(rotation_error, measured.rotation_error);
+      MU::Seam_transition moved = measured.transition;
       if(layout.edge_reversed[e]) moved = moved.inverse();
       const std::size_t j = layout.chain_of_edge[e];
       const Uv expected{layout.chain_translation[j][0] + tau_change[2 * j], layout.chain_translation[j][1] + tau_change[2 * j + 1]};
-      translation_error = std::max(translation_error, norm(minus(moved.translation, expected)));
+      translation_error = std::max(translation_error, MU::internal::norm(MU::internal::minus(moved.translation, expected)));
     }
     std::cout << name << ": rotations kept to " << rotation_error << ", translations one per seam to " << translation_error << "\n";
     CHECK_MESSAGE(rotation_error <= 1e-12, name << ": a rotation is off by " << rotation_error);
