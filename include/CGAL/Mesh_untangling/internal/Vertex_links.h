@@ -108,7 +108,9 @@ struct Vertex_links
   std::vector<long> parameter_index;                    // per vertex: its place in `parameters`, -1 for others
   std::vector<double> following;                        // per vertex: D's entry (representatives)
   std::vector<std::vector<std::pair<std::size_t, Matrix>>> coupling;   // per representative r: (parameter, B_ur)
-  Eigen::LLT<Eigen::MatrixXd> schur;
+  // (made on an empty matrix: copying an LLT never computed reads Eigen's
+  // uninitialized status, which UBSan reports)
+  Eigen::LLT<Eigen::MatrixXd> schur{Eigen::MatrixXd(0, 0)};
   // The parameters held where they are (set by the eps loop, see
   // Eps_loop::run): the projection then moves the representatives only, as
   // with the translations kept.
