@@ -89,7 +89,6 @@ struct Eps_loop_outcome
   bool stalled = false;            // the number of inverted elements stopped going down
   bool numerical_failure = false;
   bool stopped = false;            // by the callback or the clock
-  bool evaluations_spent = false;  // Untangling_options::max_energy_evaluations ran out
   double energy = 0, epsilon = 0;
 };
 
@@ -150,7 +149,7 @@ public:
     solver_ = Solver::LBFGS;
     trial_evaluations_left_ = lbfgs_trial_evaluations;
     out = run(P, 0, Stall_test::COUNT_STANDS);
-    trial_evaluations_left_ = no_trial;
+    trial_evaluations_left_ = unlimited;
     if(!out.stopped && !out.stalled && !out.numerical_failure &&
        determinant_summary(P, P.x.data()).non_positive == 0 && locally_invertible()) {
       result_.solver = to_string(Solver::LBFGS) + " (tried first: a Newton factorization would cost about " +
@@ -254,7 +253,8 @@ public:
       if(idle_steps >= stall_patience()) { out.stalled = summary.non_positive > 0; break; }
       eps = next_eps;
       if(out_of_time() || trial_evaluations_left_ == 0) { out.stopped = true; break; }
-      if(evaluations_left_ == 0) { out.evaluations_spent = true; break; }
+      // (out of max_energy_evaluations: the verdict says what is left, and a fallback may follow)
+      if(evaluations_left_ == 0) break;
     }
     return out;
   }
@@ -363,27 +363,28 @@ private:
 
   /// Asked before every evaluation of the published trial's inner solves:
   /// whether its budget is spent (counting this evaluation).
-  bool trial_spent()
-  {
-    if(trial_evaluations_left_ == no_trial) return false;
-    if(trial_evaluations_left_ == 0) return true;
-    --trial_evaluations_left_;
-    return false;
-  }
+  bool trial_spent() { return spend_one(trial_evaluations_left_); }
 
   /// Asked before every evaluation of L-BFGS's inner solves: whether
   /// max_energy_evaluations is spent (counting this evaluation).
-  bool budget_spent()
+  bool budget_spent() { return spend_one(evaluations_left_); }
+
+  void charge_evaluations(std::size_t n)
   {
-    if(evaluations_left_ == 0) return true;
-    --evaluations_left_;
+    if(evaluations_left_ != unlimited) evaluations_left_ -= std::min(evaluations_left_, n);
+  }
+
+  /// Counts one evaluation against `left` (unlimited: no budget); true when none was left.
+  static bool spend_one(std::size_t& left)
+  {
+    if(left == unlimited) return false;
+    if(left == 0) return true;
+    --left;
     return false;
   }
 
-  void charge_evaluations(std::size_t n) { evaluations_left_ -= std::min(evaluations_left_, n); }
-
-  static constexpr std::size_t no_trial = std::numeric_limits<std::size_t>::max();
-  std::size_t trial_evaluations_left_ = no_trial;
+  static constexpr std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+  std::size_t trial_evaluations_left_ = unlimited;
   const Untangling_options& options_;
   std::size_t evaluations_left_ = options_.max_energy_evaluations;
   const double theta_;
