@@ -278,9 +278,41 @@ struct Checks
   Boundary_verdict boundary_before, boundary_after;
 };
 
+/// What stands between the result and local invertibility, by id (input
+/// defects apart, which `input_defects` counts): inverted elements,
+/// over-wound stars with their winding and whether their vertex is fixed,
+/// over-wound edge fans, and the phantoms left non-positive.  Empty lists
+/// when the map is locally invertible.
+nlohmann::ordered_json blocking_defects(const Mesh_file& mesh, const std::vector<bool>& is_fixed,
+                                        const Run_record& run_record, const Verdict& v,
+                                        const std::vector<std::size_t>& phantoms_not_positive)
+{
+  nlohmann::ordered_json stars = nlohmann::ordered_json::array();
+  for(std::size_t k = 0; k < v.overwound_vertex_ids.size(); ++k) {
+    const std::size_t vertex = v.overwound_vertex_ids[k];
+    nlohmann::ordered_json star = {{"vertex", vertex}};
+    if(k < v.overwound_vertex_coverings.size()) star["covering"] = v.overwound_vertex_coverings[k];
+    if(!is_fixed.empty()) star["fixed"] = vertex < is_fixed.size() && is_fixed[vertex];
+    stars.push_back(std::move(star));
+  }
+  nlohmann::ordered_json phantoms = nlohmann::ordered_json::array();
+  for(std::size_t k : phantoms_not_positive) {
+    nlohmann::ordered_json phantom = {{"phantom", k}};
+    if(k < run_record.phantom_simplices.size()) phantom["vertices"] = run_record.phantom_simplices[k];
+    phantoms.push_back(std::move(phantom));
+  }
+  nlohmann::ordered_json b;
+  b[mesh.cell_size != 0 ? "inverted_corner_simplices" : "inverted_elements"] = v.inverted_element_ids;
+  b["overwound_vertices"] = stars;
+  b["overwound_edges"] = v.overwound_edge_ids;
+  b["phantom_elements_not_positive"] = phantoms;
+  return b;
+}
+
 void write_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
-                  const Mesh_file& mesh, const MU::Untangling_result& r, const Run_record& run_record,
-                  const Verdict& v, const Checks& c, std::size_t phantoms_not_positive)
+                  const Mesh_file& mesh, const std::vector<bool>& is_fixed, const MU::Untangling_result& r,
+                  const Run_record& run_record,
+                  const Verdict& v, const Checks& c, const std::vector<std::size_t>& phantoms_not_positive)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -298,7 +330,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["phantom_elements"] = r.number_of_phantom_elements;
   j["phantom_vertices"] = r.number_of_phantom_vertices;
   j["incomplete_phantom_stars"] = r.incomplete_phantom_stars;
-  j["phantom_elements_not_positive_after"] = phantoms_not_positive;
+  j["phantom_elements_not_positive_after"] = phantoms_not_positive.size();
   j["phantoms_output"] = args.phantoms.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.phantoms);
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(element_dimension(mesh));
@@ -324,6 +356,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
     j["min_scaled_jacobian_before"] = c.before.min_scaled_jacobian;
     j["min_scaled_jacobian_after"] = v.min_scaled_jacobian;
   }
+  j["blocking"] = blocking_defects(mesh, is_fixed, run_record, v, phantoms_not_positive);
   j["min_covering"] = v.min_covering;
   j["max_covering"] = v.max_covering;
   j["max_boundary_covering"] = v.max_boundary_covering;
@@ -538,8 +571,8 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   }
   if(!args.report.empty())
     write_text_file(args.report, to.report, [&](std::ostream& out) {
-      write_report(out, args, run.fixed_source, mesh, run.result, run.record, verdict, run.checks,
-                   phantoms ? phantoms->not_positive : 0);
+      write_report(out, args, run.fixed_source, mesh, run.fixed, run.result, run.record, verdict, run.checks,
+                   phantoms ? phantoms->not_positive_ids : std::vector<std::size_t>());
     });
   files.commit();
   return verdict;
@@ -641,6 +674,8 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["overwound_vertices"] = v.overwound_vertices;
   j["input_defects"] = v.input_defects;
   j["input_defect_stars"] = v.input_defect_stars;
+  // (stars are wedges' here, and the fixed flags are the surface vertices': not said per star)
+  j["blocking"] = blocking_defects(mesh, {}, Run_record(), v, {});
   j["min_covering"] = v.min_covering;
   j["max_covering"] = v.max_covering;
   j["max_boundary_covering"] = v.max_boundary_covering;

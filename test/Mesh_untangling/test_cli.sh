@@ -74,6 +74,21 @@ vtk_field() {
     on { print }' "$1"
 }
 vtk_count() { vtk_field "$1" "$2" | wc -l | tr -d ' '; }
+# vtk_flagged FILE NAME: the ids whose flag NAME is 1, on one line.
+vtk_flagged() { vtk_field "$1" "$2" | awk '$1 == 1 { printf "%s%d", n++ ? " " : "", NR - 1 } END { print "" }'; }
+# blocking_ids FILE KEY: the ids the report's "blocking" lists under KEY, on one line (python3 only).
+blocking_ids() {
+  python3 -c 'import json, sys
+b = json.load(open(sys.argv[1]))["blocking"][sys.argv[2]]
+print(" ".join(str(x["vertex"] if isinstance(x, dict) else x) for x in b))' "$1" "$2"
+}
+# blocking_coverings_match REPORT VTK: every blocking star's covering is the .vtk's covering of its vertex.
+blocking_coverings_match() {
+  vtk_field "$2" covering | python3 -c 'import json, sys
+covering = [float(line) for line in sys.stdin]
+stars = json.load(open(sys.argv[1]))["blocking"]["overwound_vertices"]
+sys.exit(not all(abs(s["covering"] - covering[s["vertex"]]) <= 1e-9 and s["fixed"] in (True, False) for s in stars))' "$1"
+}
 vtk_sum() { vtk_field "$1" "$2" | awk '{ s += $1 } END { print s + 0 }'; }
 vtk_min() { vtk_field "$1" "$2" | awk 'NR == 1 || $1 < m { m = $1 } END { printf "%.17g\n", m }'; }
 vtk_header() { awk -v key="$2" '$1 == key { print $2; exit }' "$1"; }
@@ -435,6 +450,15 @@ check "--time-limit 0: result written" grep -q '^CELL_TYPES 4' mirror_time.vtk
 check "--time-limit 0: inverted flags = inverted_after" \
   [ "$(vtk_sum mirror_time.vtk inverted)" = "$(json_get mirror_time.json inverted_after)" ]
 check "--time-limit 0: inverted_after > 0" json_positive mirror_time.json inverted_after
+# The report names what blocks: the same elements and stars as the .vtk flags.
+if [ "$have_python" = 1 ]; then
+  check "--time-limit 0: blocking inverted elements = the .vtk's inverted cells" \
+    [ "$(blocking_ids mirror_time.json inverted_elements)" = "$(vtk_flagged mirror_time.vtk inverted)" ]
+  check "--time-limit 0: blocking over-wound stars = the .vtk's overwound points" \
+    [ "$(blocking_ids mirror_time.json overwound_vertices)" = "$(vtk_flagged mirror_time.vtk overwound)" ]
+  check "--time-limit 0: some blocking star" [ -n "$(blocking_ids mirror_time.json overwound_vertices)" ]
+  check "--time-limit 0: each blocking star's covering is the .vtk's" blocking_coverings_match mirror_time.json mirror_time.vtk
+fi
 
 #
 # Exit 2: bad usage or input. The message names the problem; nothing is
@@ -627,6 +651,12 @@ check "flatten --phantoms: one cell per phantom" \
 check "flatten --phantoms: the mesh's vertices" [ "$(vtk_header flat-phantoms.vtk POINTS)" = 49 ]
 check "flatten --phantoms: positive flags" \
   [ "$(vtk_sum flat-phantoms.vtk positive)" = "$(( $(json_get flat.json phantom_elements) - $(json_get flat.json phantom_elements_not_positive_after) ))" ]
+if [ "$have_python" = 1 ]; then
+  check "flatten: the blocking phantoms are the non-positive ones" \
+    [ "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["blocking"]["phantom_elements_not_positive"]))' flat.json)" \
+      = "$(json_get flat.json phantom_elements_not_positive_after)" ]
+  check "flatten: nothing blocks" [ -z "$(blocking_ids flat.json inverted_elements)$(blocking_ids flat.json overwound_vertices)" ]
+fi
 check "flatten --phantoms: det_J per phantom" vtk_fields_sized flat-phantoms.vtk "$(json_get flat.json phantom_elements)" det_J
 check "flatten --svg: phantoms dashed" \
   [ "$(svg_count flat.svg '<polygon class="phantom"')" = "$(json_get flat.json phantom_elements)" ]

@@ -127,7 +127,8 @@ void check_run(const std::string& name, Problem p, bool phantoms)
   CHECK_MESSAGE(phantoms == (result.number_of_phantom_elements > 0), name << ": phantoms " << result.number_of_phantom_elements);
   const auto& positive = field(ph.cells, "positive");
   CHECK_MESSAGE(positive.size() == ph.mesh.simplices.size(), name);
-  CHECK_MESSAGE(double(ph.not_positive) == double(positive.size()) - sum(positive), name);
+  CHECK_MESSAGE(double(ph.not_positive_ids.size()) == double(positive.size()) - sum(positive), name);
+  for(std::size_t e : ph.not_positive_ids) CHECK_MESSAGE(positive[e] == 0, name << ": phantom " << e);
   for(std::size_t e = 0; e < positive.size(); ++e)
     CHECK_MESSAGE((positive[e] == 1) == (phantom_det[e] > 0) || std::abs(phantom_det[e]) < 1e-12,
                   name << ": phantom " << e << " det_J " << phantom_det[e] << " positive " << positive[e]);
@@ -137,7 +138,7 @@ void check_run(const std::string& name, Problem p, bool phantoms)
     add_phantom_overlay(picture, record);
     CHECK_MESSAGE(picture.overlay.size() == result.number_of_phantom_elements, name);
   }
-  std::cout << name << ": " << m << " elements, " << ph.mesh.simplices.size() << " phantoms (" << ph.not_positive
+  std::cout << name << ": " << m << " elements, " << ph.mesh.simplices.size() << " phantoms (" << ph.not_positive_ids.size()
             << " not positive), min det_J " << min_det << ", inverted " << verdict.inverted << "\n";
 }
 

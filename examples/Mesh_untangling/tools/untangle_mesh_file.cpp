@@ -288,7 +288,22 @@ Verdict verdict_of(const MU::Invertibility_report& report)
   v.min_covering = report.min_covering;
   v.max_covering = report.max_covering;
   v.max_boundary_covering = report.max_boundary_covering;
+  v.inverted_element_ids = report.inverted_element_ids;
+  v.overwound_vertex_ids = report.overwound_vertex_ids;
+  v.overwound_edge_ids = report.overwound_edges;
   return v;
+}
+
+template <int d, class Points, class Simplices>
+std::vector<double> covering_numbers(const Points& points, const Simplices& simplices, const std::vector<int>& orientation)
+{
+  if constexpr(d == 2) return MU::vertex_covering_numbers_2(points, simplices, orientation);
+  else return MU::vertex_covering_numbers_3(points, simplices, orientation);
+}
+
+void add_coverings(Verdict& v, const std::vector<double>& covering)
+{
+  for(std::size_t vertex : v.overwound_vertex_ids) v.overwound_vertex_coverings.push_back(covering[vertex]);
 }
 
 template <int d>
@@ -304,8 +319,12 @@ Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
       v.min_scaled_jacobian = std::min(v.min_scaled_jacobian, j);
     return v;
   }
-  return verdict_of(MU::check_local_invertibility<d>(points_of<d>(mesh.map), simplices_of<d>(mesh),
-                                                     reference_orientations(mesh), is_fixed));
+  const auto points = points_of<d>(mesh.map);
+  const auto simplices = simplices_of<d>(mesh);
+  const std::vector<int> orientation = reference_orientations(mesh);
+  Verdict v = verdict_of(MU::check_local_invertibility<d>(points, simplices, orientation, is_fixed));
+  if(!v.overwound_vertex_ids.empty()) add_coverings(v, covering_numbers<d>(points, simplices, orientation));
+  return v;
 }
 
 /// det_J and positive of the phantoms (`first` is the number of mesh elements).
@@ -384,18 +403,18 @@ Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, con
   const std::vector<int> orientation = reference_orientations(mesh);
   const auto report = MU::check_local_invertibility<d>(points, simplices, orientation, is_fixed);
   const std::size_t n = mesh.map.size(), m = simplices.size();
+  const std::vector<double> covering = covering_numbers<d>(points, simplices, orientation);
   Map_fields f;
   f.verdict = verdict_of(report);
+  add_coverings(f.verdict, covering);
   add_distortions(record, m, f.cells);
   f.cells.push_back(flags("inverted", m, report.inverted_element_ids));
   f.cells.push_back(flags("input_defect", m, report.input_defect_element_ids));
   f.points.push_back({"fixed", std::vector<double>(n, 0.), true});
   for(std::size_t v = 0; v < is_fixed.size(); ++v) f.points.back().values[v] = is_fixed[v];
   f.points.push_back(flags("overwound", n, report.overwound_vertex_ids));
-  if constexpr(d == 2) {
-    f.points.push_back({"covering", MU::vertex_covering_numbers_2(points, simplices, orientation)});
-  } else {
-    f.points.push_back({"covering", MU::vertex_covering_numbers_3(points, simplices, orientation)});
+  f.points.push_back({"covering", covering});
+  if constexpr(d == 3) {
     MU::IO::VTK_field edges{"overwound_edges", std::vector<double>(n, 0.), true};
     for(const auto& e : report.overwound_edges) { ++edges.values[e[0]]; ++edges.values[e[1]]; }
     f.points.push_back(std::move(edges));
@@ -642,7 +661,9 @@ Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record)
   p.mesh.map.insert(p.mesh.map.end(), record.phantom_vertices.begin(), record.phantom_vertices.end());
   p.cells = mesh.simplex_size == 3 ? phantom_cells<2>(p.mesh, record, mesh.simplices.size())
                                    : phantom_cells<3>(p.mesh, record, mesh.simplices.size());
-  for(double positive : p.cells.back().values) p.not_positive += positive == 0;
+  const std::vector<double>& positive = p.cells.back().values;
+  for(std::size_t k = 0; k < positive.size(); ++k)
+    if(positive[k] == 0) p.not_positive_ids.push_back(k);
   std::vector<double> phantom_vertex(p.mesh.map.size(), 0.);
   std::fill(phantom_vertex.begin() + mesh.map.size(), phantom_vertex.end(), 1.);
   p.points = {{"phantom_vertex", std::move(phantom_vertex), true}};

@@ -149,6 +149,11 @@ struct Verdict
   std::size_t overwound_interior_edges = 0;
   std::size_t overwound_boundary_edges = 0;
   double min_covering = 1, max_covering = 1, max_boundary_covering = 0;
+  // Which elements and stars block local invertibility (sorted ids; input defects apart):
+  std::vector<std::size_t> inverted_element_ids;               ///< simplices (cells: corner simplices)
+  std::vector<std::size_t> overwound_vertex_ids;
+  std::vector<double> overwound_vertex_coverings;              ///< the winding of each, in the same order
+  std::vector<std::array<std::size_t, 2>> overwound_edge_ids;  ///< 3D
   // Quadrilaterals and hexahedra only (stars are not checked there):
   std::vector<std::size_t> inverted_cell_ids;   ///< cells with a non-positive corner, input defects included
   double min_scaled_jacobian = 1;               ///< over the cells (Mesh_untangling::scaled_jacobian())
@@ -182,7 +187,7 @@ struct Phantom_mesh
 {
   Mesh_file mesh;
   CGAL::Mesh_untangling::IO::VTK_fields cells, points;
-  std::size_t not_positive = 0;
+  std::vector<std::size_t> not_positive_ids;   ///< phantoms, numbered from 0
 };
 Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record);
 
