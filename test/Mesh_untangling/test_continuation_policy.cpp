@@ -8,13 +8,17 @@
 // invertible within 40 eps steps; the continuation does within 32.  The
 // direct run's budget of energy evaluations (the same on every machine)
 // stops it with the verdict of what is left, which leaves the continuation
-// its turn.
+// its turn.  The first step of a continuation starts its free vertices
+// carried along by the rigid groups of fixed vertices (carried_motion.h): a
+// bar twisted by 180° or bent by 90° is locally invertible there already,
+// with its fixed vertices exactly in place.
 // Usage: test_continuation_policy
 
 #include "free_boundary_families.h"
 
 #include "test_common.h"
 
+#include <CGAL/Mesh_untangling/internal/carried_motion.h>
 #include <CGAL/Mesh_untangling/internal/untangle_impl.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
@@ -42,10 +46,43 @@ MI::Untangling_input<3> tetrahedral_problem(const Mesh_file& mesh)
   return in;
 }
 
+/// The bar's map with its free vertices carried from rest to the end of the
+/// motion: how many tetrahedra are not positive, and whether every fixed
+/// vertex is bitwise at its given position.
+void check_carried_bar(const std::string& motion, double degrees)
+{
+  const Mesh_file mesh = make_bar(24, 3, motion, degrees);
+  const MI::Untangling_input<3> in = tetrahedral_problem(mesh);
+  std::vector<Eigen::Vector3d> rest;
+  for(const auto& p : mesh.rest) rest.emplace_back(p[0], p[1], p[2]);
+  const MI::Fixed_vertex_motion<3> path(in, rest, in.positions);
+  const MI::Carried_motion<3> carried(in, path);
+  CHECK_MESSAGE(carried.carries(), motion << ": nothing carried");
+  std::vector<Eigen::Vector3d> start = rest;
+  for(std::size_t v : mesh.fixed) start[v] = in.positions[v];
+  const std::vector<Eigen::Vector3d> x = carried.carry(start, 0, 1, in.is_fixed);
+  std::vector<std::array<double, 3>> points, at_rest;
+  for(std::size_t v = 0; v < x.size(); ++v) {
+    points.push_back({x[v].x(), x[v].y(), x[v].z()});
+    at_rest.push_back({start[v].x(), start[v].y(), start[v].z()});
+  }
+  std::size_t not_positive = 0, not_positive_at_rest = 0;
+  for(int o : CGAL::Mesh_untangling::simplex_orientations<3>(points, mesh.simplices)) not_positive += o <= 0;
+  for(int o : CGAL::Mesh_untangling::simplex_orientations<3>(at_rest, mesh.simplices)) not_positive_at_rest += o <= 0;
+  std::printf("bar 24 x 3 x 3 %s %g: %zu tetrahedra not positive with the free vertices at rest, %zu carried\n",
+              motion.c_str(), degrees, not_positive_at_rest, not_positive);
+  CHECK_MESSAGE(not_positive_at_rest > 0, motion << ": the problem is not tangled at rest");
+  CHECK_MESSAGE(not_positive == 0, motion << ": " << not_positive << " tetrahedra not positive when carried");
+  for(std::size_t v : mesh.fixed) CHECK_MESSAGE(x[v] == in.positions[v], motion << ": fixed vertex " << v << " moved");
+}
+
 } // namespace
 
 int main()
 {
+  check_carried_bar("twist", 180);
+  check_carried_bar("bend", 90);
+
   const Mesh_file mesh = make_kuhn_cavities(2, 4, 2, 150);
   MI::Untangling_input<3> in = tetrahedral_problem(mesh);
   const auto given = in.positions;

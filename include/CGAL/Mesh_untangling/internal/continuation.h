@@ -20,6 +20,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 
+#include <CGAL/Mesh_untangling/internal/carried_motion.h>
 #include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 
@@ -171,7 +172,7 @@ public:
   Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
                const std::vector<Vector>& rest)
     : in_(in), options_(options), protection_(protection), given_(in.positions), path_(in, rest, given_),
-      build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
+      carried_(in, path_), build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
   {}
 
   /// A step from the locally invertible map `from` to `motion`: first
@@ -200,6 +201,14 @@ public:
     Untangling_result r = run_step(from, from, 1., true, stop_requested_, true);
     if(stop_requested_ && !reached_goal(r.status)) r.status = Untangling_status::STOPPED_BY_CALLBACK;
     return r;
+  }
+
+  /// `from` (at `from_motion`) with the free vertices carried along by the
+  /// rigid groups of fixed vertices to `to_motion`; none when no group carries them.
+  std::optional<std::vector<Vector>> carried(const std::vector<Vector>& from, double from_motion, double to_motion) const
+  {
+    if(!carried_.carries()) return std::nullopt;
+    return carried_.carry(from, from_motion, to_motion, in_.is_fixed);
   }
 
   bool has_budget() const { return seconds_left() > 0 && eps_steps_left() > 0; }
@@ -265,6 +274,7 @@ private:
   const Protection_request<d>& protection_;
   const std::vector<Vector> given_;
   const Fixed_vertex_motion<d> path_;
+  const Carried_motion<d> carried_;
   const bool build_phantoms_;
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   Untangling_result work_;   // what the steps cost, all together
@@ -314,9 +324,14 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     // cavities-tetgen-h1 turned 165° came out locally invertible, where
     // steps from the last map got stuck at 164°.  (Either start alone
     // leaves the cavities tangled.)
+    // The first step has no two maps to extrapolate from: its free vertices
+    // start carried along by the rigid groups of fixed vertices (carried_motion.h).
+    const auto prediction = reached > previous_reached
+                              ? std::optional(extrapolated_map<d>(previous, previous_reached, valid, reached, motion))
+                              : c.carried(valid, reached, motion);
     bool predicted = false;
-    if(reached > previous_reached) {
-      last = c.try_predicted_step(extrapolated_map<d>(previous, previous_reached, valid, reached, motion), motion);
+    if(prediction) {
+      last = c.try_predicted_step(*prediction, motion);
       if(last.status == Untangling_status::INVALID_INPUT) return last;
       predicted = reached_goal(last.status);
     }

@@ -94,8 +94,8 @@ public:
     return angle;
   }
 
-private:
-  static constexpr std::size_t none = std::size_t(-1);
+  /// A connected group of fixed vertices and the rigid motion that best
+  /// takes it from rest to its given positions (when `rigid`).
   struct Group
   {
     std::vector<std::size_t> vertices;
@@ -103,6 +103,18 @@ private:
     Vector rest_centre = Vector::Zero(), given_centre = Vector::Zero();
     Matrix rotation = Matrix::Identity();
   };
+
+  /// The groups that move as rigid motions (the others move on straight lines).
+  std::vector<Group> rigid_groups() const
+  {
+    std::vector<Group> rigid;
+    for(const Group& g : groups_)
+      if(g.rigid) rigid.push_back(g);
+    return rigid;
+  }
+
+private:
+  static constexpr std::size_t none = std::size_t(-1);
 
   /// The connected components of the fixed vertices along the elements' edges.
   void find_groups(const Untangling_input<d>& in)
