@@ -76,12 +76,39 @@ void check_carried_bar(const std::string& motion, double degrees)
   for(std::size_t v : mesh.fixed) CHECK_MESSAGE(x[v] == in.positions[v], motion << ": fixed vertex " << v << " moved");
 }
 
+/// The automatic policy starts a 3D problem from the carried map when it
+/// has no inverted element: one step of the whole motion, no phantom, the
+/// fixed vertices exactly in place, the before figures those of the given map.
+void check_untangled_from_carried_start()
+{
+  const Mesh_file mesh = make_bar(24, 3, "twist", 180);
+  MI::Untangling_input<3> in = tetrahedral_problem(mesh);
+  const auto given = in.positions;
+  MI::Phantom_elements<3> phantoms;
+  const auto r = MI::untangle<3>(in, MI::Untangling_options(), MI::Protection_request<3>(), &phantoms);
+  std::printf("bar 24 x 3 x 3 twisted 180°: %s, %zu inverted before, %zu continuation steps, %zu phantoms, "
+              "%zu energy evaluations\n",
+              CGAL::Mesh_untangling::to_string(r.status).c_str(), r.inverted_before, r.continuation_steps,
+              r.number_of_phantom_elements, r.energy_evaluations);
+  CHECK_MESSAGE(r.status == CGAL::Mesh_untangling::Untangling_status::SUCCESS, "not locally invertible: " << r.message);
+  CHECK_MESSAGE(r.inverted_before == 18, r.inverted_before << " inverted before, not the given map's 18");
+  CHECK_MESSAGE(r.continuation_steps == 1, r.continuation_steps << " continuation steps");
+  CHECK_MESSAGE(r.number_of_phantom_elements == 0, r.number_of_phantom_elements << " phantoms");
+  for(std::size_t v : mesh.fixed) CHECK_MESSAGE(in.positions[v] == given[v], "fixed vertex " << v << " moved");
+  std::vector<std::array<double, 3>> points;
+  for(const auto& p : in.positions) points.push_back({p.x(), p.y(), p.z()});
+  const auto rest_orientations = CGAL::Mesh_untangling::simplex_orientations<3>(mesh.rest, mesh.simplices);
+  CHECK(CGAL::Mesh_untangling::check_local_invertibility<3>(points, mesh.simplices, rest_orientations, in.is_fixed)
+          .is_locally_invertible());
+}
+
 } // namespace
 
 int main()
 {
   check_carried_bar("twist", 180);
   check_carried_bar("bend", 90);
+  check_untangled_from_carried_start();
 
   const Mesh_file mesh = make_kuhn_cavities(2, 4, 2, 150);
   MI::Untangling_input<3> in = tetrahedral_problem(mesh);

@@ -116,6 +116,7 @@ int main()
   }
   check_instance("bar 16x3x3 twisted 120°", make_bar(16, 3, "twist", 120), true);
   check_instance("bar 16x3x3 shifted", make_bar(16, 3, "shift", 0), true);
+  check_instance("bar 24x3x3 bent 90°", make_bar(24, 3, "bend", 90), true);
   for(const Family_instance& i : free_boundary_family("locked-region", Family_size::QUICK)) {
     check_tangled(i.name, i.make(), 1);
     check_instance(i.name, i.make(), i.boundary_should_be_simple);

@@ -225,6 +225,7 @@ private:
     return options_.max_outer_iterations - std::min(options_.max_outer_iterations, work_.outer_iterations);
   }
 
+public:
   /// The step's problem: the fixed vertices at `motion` of their path, the free ones at `start`.
   Untangling_input<d> step_input(const std::vector<Vector>& start, double motion) const
   {
@@ -234,6 +235,8 @@ private:
       if(step.is_fixed[v]) step.positions[v] = path_.position(v, motion);
     return step;
   }
+
+private:
 
   Untangling_options step_options(double motion, bool only_check, bool last_step)
   {

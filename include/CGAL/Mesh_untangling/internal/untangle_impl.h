@@ -112,6 +112,67 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
 constexpr double direct_run_element_evaluations = 1e8;
 constexpr std::size_t direct_run_least_evaluations = 2000;
 
+/// The energy evaluations of a direct 3D run of `elements` elements before a fallback.
+inline std::size_t direct_run_evaluations(std::size_t elements)
+{
+  return std::max<std::size_t>(direct_run_least_evaluations,
+                               static_cast<std::size_t>(direct_run_element_evaluations /
+                                                        double(std::max<std::size_t>(elements, 1))));
+}
+
+/// The untangling from the map where the rigid groups of fixed vertices
+/// carry the free vertices all the way (carried_motion.h), when they move
+/// beyond an edge and that map has no inverted element, without phantoms:
+/// one continuation step of the whole motion.  A bar twisted by 180° or
+/// bent by 90° is locally invertible there already; their direct untangling took most of the 17-35 s of the
+/// 50k-tet bars.  None when it does not apply; otherwise its result, with
+/// `in` at the result's map when the result is final (it reached the goal,
+/// or left no room for a fallback) and at the given map otherwise.
+/// Whether some fixed vertex is prescribed farther from its rest position
+/// than the mean edge length of the rest (over the elements' first edges):
+/// a motion to follow, not a map to repair where it is.  A cube whose
+/// bottom is fixed in place and whose inside is tangled is to be untangled
+/// from its map, not replaced by its rest.
+template <int d>
+bool fixed_vertices_move_beyond_an_edge(const Untangling_input<d>& in,
+                                        const std::vector<Eigen::Matrix<double, d, 1>>& rest)
+{
+  const std::size_t m = in.number_of_mesh_elements();
+  if(m == 0) return false;
+  double edge = 0;
+  for(std::size_t k = 0; k < m; ++k) edge += (rest[in.elements[k][1]] - rest[in.elements[k][0]]).norm();
+  edge /= double(m);
+  for(std::size_t v = 0; v < in.is_fixed.size() && v < rest.size(); ++v)
+    if(in.is_fixed[v] && (in.positions[v] - rest[v]).norm() > edge) return true;
+  return false;
+}
+
+template <int d>
+std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>& in, const Untangling_options& options,
+                                                             const Protection_request<d>& protection,
+                                                             const std::vector<Eigen::Matrix<double, d, 1>>& rest)
+{
+  if(!fixed_vertices_move_beyond_an_edge<d>(in, rest)) return std::nullopt;
+  Untangling_options budget = options;   // (as much work as a direct run)
+  budget.max_energy_evaluations = direct_run_evaluations(in.elements.size());
+  Continuation_steps<d> steps(in, budget, protection, rest);
+  const auto start = steps.carried(rest, 0, 1);
+  if(!start || input_figures<d>(steps.step_input(*start, 1), options).inverted_before > 0) return std::nullopt;
+  const Untangling_result given = input_figures<d>(in, options);
+  Untangling_result r = steps.try_predicted_step(*start, 1);
+  r.inverted_before = given.inverted_before;
+  r.min_scaled_det_before = given.min_scaled_det_before;
+  r.continuation_steps = reached_goal(r.status) ? 1 : 0;
+  if(!leaves_room_for_a_fallback(r, options)) in.positions = steps.map();
+  return r;
+}
+
+template <int d>
+Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Protection_request<d>& protection,
+                                                         const std::vector<Eigen::Matrix<double, d, 1>>& rest,
+                                                         Phantom_elements<d>* phantoms_used);
+
 /// The run of `untangle` below, whose result may still be worse than its input.
 template <int d>
 Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_options& options,
@@ -128,7 +189,31 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   if(automatic && !has_free_boundary_vertex<d>(in)) return untangle_directly<d>(in, options, protection, phantoms_used);
   if(!automatic)
     return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
+  if constexpr(d == 3) {
+    if(std::optional<Untangling_result> carried = untangle_from_carried_start<d>(in, options, protection, *rest)) {
+      if(!leaves_room_for_a_fallback(*carried, options)) {
+        if(phantoms_used) *phantoms_used = Phantom_elements<d>();
+        return *carried;
+      }
+      Untangling_options remaining = options;
+      remaining.max_seconds = options.max_seconds - carried->seconds;
+      remaining.max_outer_iterations = options.max_outer_iterations - carried->outer_iterations;
+      Untangling_result r = untangle_directly_then_by_continuation<d>(in, remaining, protection, *rest, phantoms_used);
+      add_work(r, *carried);
+      return r;
+    }
+  }
+  return untangle_directly_then_by_continuation<d>(in, options, protection, *rest, phantoms_used);
+}
 
+/// The automatic policy: the direct untangling first, then, where it does
+/// not end locally invertible, the continuation from `rest`.
+template <int d>
+Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Protection_request<d>& protection,
+                                                         const std::vector<Eigen::Matrix<double, d, 1>>& rest,
+                                                         Phantom_elements<d>* phantoms_used)
+{
   // With phantoms built in the rest shape, a stall of the direct untangling
   // is the sign that they block it (see above): in 3D, do not spend the
   // stage fallbacks on it.  In 2D they are cheap and can beat the
@@ -150,10 +235,7 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   Untangling_options direct = options;
   direct.max_seconds = options.max_seconds * 2 / 3;
   direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
-  if(d == 3)
-    direct.max_energy_evaluations = std::max<std::size_t>(
-      direct_run_least_evaluations,
-      static_cast<std::size_t>(direct_run_element_evaluations / double(std::max<std::size_t>(in.elements.size(), 1))));
+  if(d == 3) direct.max_energy_evaluations = direct_run_evaluations(in.elements.size());
   direct.give_up_on_stall = d == 3 && !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
   Phantom_elements<d> direct_phantoms;
   Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);
@@ -168,7 +250,7 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   remaining.max_outer_iterations = options.max_outer_iterations - first.outer_iterations;
   Phantom_elements<d> continued_phantoms;
   Untangling_result continued =
-    untangle_by_continuation<d>(in, remaining, protection, *rest, first, &continued_phantoms);
+    untangle_by_continuation<d>(in, remaining, protection, rest, first, &continued_phantoms);
   if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
     in.positions = direct_map;   // the direct result was the better one
     add_work(first, continued);
