@@ -120,14 +120,6 @@ inline std::size_t direct_run_evaluations(std::size_t elements)
                                                         double(std::max<std::size_t>(elements, 1))));
 }
 
-/// The untangling from the map where the rigid groups of fixed vertices
-/// carry the free vertices all the way (carried_motion.h), when they move
-/// beyond an edge and that map has no inverted element, without phantoms:
-/// one continuation step of the whole motion.  A bar twisted by 180° or
-/// bent by 90° is locally invertible there already; their direct untangling took most of the 17-35 s of the
-/// 50k-tet bars.  None when it does not apply; otherwise its result, with
-/// `in` at the result's map when the result is final (it reached the goal,
-/// or left no room for a fallback) and at the given map otherwise.
 /// Whether some fixed vertex is prescribed farther from its rest position
 /// than the mean edge length of the rest (over the elements' first edges):
 /// a motion to follow, not a map to repair where it is.  A cube whose
@@ -147,6 +139,15 @@ bool fixed_vertices_move_beyond_an_edge(const Untangling_input<d>& in,
   return false;
 }
 
+/// The untangling from the map where the rigid groups of fixed vertices
+/// carry the free vertices all the way (carried_motion.h), when they move
+/// beyond an edge and that map has no inverted element, without phantoms:
+/// one continuation step of the whole motion.  A bar twisted by 180° or
+/// bent by 90° is locally invertible there already; their direct
+/// untangling took most of the 17-35 s of the 50k-tet bars.  None when it
+/// does not apply; otherwise its result, with `in` at the result's map when
+/// the result is final (it reached the goal, or left no room for a
+/// fallback) and at the given map otherwise.
 template <int d>
 std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>& in, const Untangling_options& options,
                                                              const Protection_request<d>& protection,
