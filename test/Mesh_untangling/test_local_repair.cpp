@@ -7,6 +7,7 @@
 
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -74,8 +75,9 @@ void check_cluster_is_repaired_in_place()
   CHECK(inverted >= 4 && inverted <= internal::local_repair_most_inverted);
 
   internal::Untangling_options options;
+  options.deadline = internal::deadline_after(60);
   CGAL::Mesh_untangling::Untangling_result work;
-  const bool repaired = internal::repair_locally<3>(in, options, 60., work);
+  const bool repaired = internal::repair_locally<3>(in, options, work);
   std::cout << "cluster: " << inverted << " inverted -> " << count_non_positive(in) << ", eps steps "
             << work.outer_iterations << ", moved up to " << farthest_moved(in, before) << " cells from the centre\n";
   CHECK(repaired);
@@ -103,7 +105,7 @@ void check_many_inverted_are_left_alone()
   const std::vector<Vector> before = in.positions;
   internal::Untangling_options options;
   CGAL::Mesh_untangling::Untangling_result work;
-  CHECK(!internal::repair_locally<3>(in, options, 60., work));
+  CHECK(!internal::repair_locally<3>(in, options, work));
   CHECK(in.positions == before);
   CHECK(work.outer_iterations == 0);
 }
@@ -116,8 +118,19 @@ void check_budget_is_kept()
   internal::Untangling_options options;
   options.max_outer_iterations = 2;
   CGAL::Mesh_untangling::Untangling_result work;
-  internal::repair_locally<3>(in, options, 60., work);
+  internal::repair_locally<3>(in, options, work);
   CHECK(work.outer_iterations <= 2);
+  // and its deadline: one already passed leaves the tangled map as it is
+  Input tangled = cube_problem();
+  tangled.positions[grid_id(n / 2, n / 2, n / 2)] += Vector(1.6 / n, 0.3 / n, 0);
+  const std::vector<Vector> before = tangled.positions;
+  CHECK(count_non_positive(tangled) > 0);
+  options.max_outer_iterations = 100;
+  options.deadline = std::chrono::steady_clock::now();
+  CGAL::Mesh_untangling::Untangling_result late;
+  CHECK(!internal::repair_locally<3>(tangled, options, late));
+  CHECK(late.outer_iterations == 0);
+  CHECK(tangled.positions == before);
 }
 
 } // namespace

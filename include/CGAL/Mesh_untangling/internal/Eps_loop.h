@@ -122,7 +122,7 @@ public:
 
   double seconds() const
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-  bool out_of_time() const { return seconds() > options_.max_seconds; }
+  bool out_of_time() const { return internal::out_of_time(options_); }
 
   /// Whether Solver::AUTOMATIC, about to run Newton on P, tries the
   /// published scheme first (see lbfgs_trial_above_flops_per_element).

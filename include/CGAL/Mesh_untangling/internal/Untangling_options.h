@@ -9,6 +9,8 @@
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -24,7 +26,12 @@ struct Untangling_options
   Solver solver = Solver::AUTOMATIC;
   std::size_t max_outer_iterations = default_number_of_iterations;
   int max_inner_iterations = -1;     // < 0: solver default
-  double max_seconds = std::numeric_limits<double>::infinity();
+  double max_seconds = std::numeric_limits<double>::infinity();   // maximum_running_time, as given
+  // When every stage stops: untangle() sets it once, max_seconds after it
+  // starts, so that the work between the stages (verdicts, phantoms, the
+  // carried map's weights: 70 s of a 300 s run at 200k tets) counts against
+  // the same clock as the stages do.  Stages read only this.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   // A budget that, unlike the clock, gives the same run on any machine: the
   // direct untangling that a continuation may follow (untangle_impl.h).
   std::size_t max_energy_evaluations = std::numeric_limits<std::size_t>::max();
@@ -48,6 +55,33 @@ struct Untangling_options
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };
+
+/// The moment `seconds` from now (never, for an infinite or huge number).
+inline std::chrono::steady_clock::time_point deadline_after(double seconds)
+{
+  using Clock = std::chrono::steady_clock;
+  const double room = std::chrono::duration<double>(Clock::time_point::max() - Clock::now()).count() / 2;
+  if(!(seconds < room)) return Clock::time_point::max();
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(seconds, 0.)));
+}
+
+/// The seconds left before `options.deadline` (infinite for none, negative once passed).
+inline double seconds_left(const Untangling_options& options)
+{
+  using Clock = std::chrono::steady_clock;
+  if(options.deadline == Clock::time_point::max()) return std::numeric_limits<double>::infinity();
+  return std::chrono::duration<double>(options.deadline - Clock::now()).count();
+}
+
+inline bool out_of_time(const Untangling_options& options) { return !(seconds_left(options) > 0); }
+
+/// `options` whose deadline comes after `share` of the time left to them.
+inline Untangling_options with_share_of_time(const Untangling_options& options, double share)
+{
+  Untangling_options o = options;
+  o.deadline = std::min(options.deadline, deadline_after(share * std::max(seconds_left(options), 0.)));
+  return o;
+}
 
 template <int d>
 double default_theta() { return Mesh_untangling::default_theta(d); }

@@ -171,8 +171,9 @@ public:
 
   Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
                const std::vector<Vector>& rest)
-    : in_(in), options_(options), protection_(protection), given_(in.positions), path_(in, rest, given_),
-      carried_(in, path_), build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
+    : start_(std::chrono::steady_clock::now()), in_(in), options_(options), protection_(protection),
+      given_(in.positions), path_(in, rest, given_), carried_(in, path_),
+      build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
   {}
 
   /// A step from the locally invertible map `from` to `motion`: first
@@ -211,7 +212,7 @@ public:
     return carried_.carry(from, from_motion, to_motion, in_.is_fixed);
   }
 
-  bool has_budget() const { return seconds_left() > 0 && eps_steps_left() > 0; }
+  bool has_budget() const { return !out_of_time(options_) && eps_steps_left() > 0; }
   bool stop_requested() const { return stop_requested_; }
   const std::vector<Vector>& map() const { return map_; }
   const Phantom_elements<d>& phantoms() const { return used_; }
@@ -219,7 +220,6 @@ public:
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
 private:
-  double seconds_left() const { return options_.max_seconds - elapsed(); }
   std::size_t eps_steps_left() const
   {
     return options_.max_outer_iterations - std::min(options_.max_outer_iterations, work_.outer_iterations);
@@ -241,7 +241,6 @@ private:
   Untangling_options step_options(double motion, bool only_check, bool last_step)
   {
     Untangling_options o = options_;
-    o.max_seconds = std::max(0., seconds_left());
     o.max_outer_iterations = only_check ? 0 : eps_steps_left();
     if(!last_step) o.max_outer_iterations = std::min(o.max_outer_iterations, eps_steps_per_step);
     o.give_up_on_stall = false;
@@ -272,6 +271,7 @@ private:
     return r;
   }
 
+  const std::chrono::steady_clock::time_point start_;   // (first: the carried map's weights are work too)
   const Untangling_input<d>& in_;
   const Untangling_options& options_;
   const Protection_request<d>& protection_;
@@ -279,7 +279,6 @@ private:
   const Fixed_vertex_motion<d> path_;
   const Carried_motion<d> carried_;
   const bool build_phantoms_;
-  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   Untangling_result work_;   // what the steps cost, all together
   bool stop_requested_ = false;
   std::vector<Vector> map_;

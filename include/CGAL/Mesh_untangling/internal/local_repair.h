@@ -143,19 +143,14 @@ bool untangle_region(Untangling_input<d>& in, const std::vector<char>& region, c
 }
 
 /// The local phase (see the file's comment) on `in` (no phantoms, targets
-/// given), within `seconds` and `options.max_outer_iterations` eps steps in
+/// given), within `options`' deadline and `options.max_outer_iterations` eps steps in
 /// all: regions of 1 to local_repair_rings rings around its non-positive
 /// elements, each with the default theta, then with the shape term alone.
 /// Returns whether one region repaired them all (its free vertices are then
 /// written); `work` receives the cost.
 template <int d>
-bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, double seconds,
-                    Untangling_result& work)
+bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, Untangling_result& work)
 {
-  const auto start = std::chrono::steady_clock::now();
-  const auto seconds_left = [&] {
-    return seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   if(in.phantom_elements > 0 || in.targets.empty()) return false;
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
   const std::vector<std::size_t> blockers = non_positive_elements<d>(in, P.reference_orientation);
@@ -166,10 +161,9 @@ bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, 
   for(int ring = 1; ring <= local_repair_rings; ++ring) {
     grow_by_one_ring<d>(in, region);
     for(double theta : {options.theta, 0.}) {
-      if(!(seconds_left() > 0) || steps_left == 0) return false;
+      if(out_of_time(options) || steps_left == 0) return false;
       Untangling_options o = options;
       o.theta = theta;
-      o.max_seconds = seconds_left();
       o.max_outer_iterations = std::min(steps_left, local_repair_eps_steps);
       o.callback = options.progress_step;   // the meter alone: the caller's callback is not told the local runs' steps
       o.give_up_on_stall = false;
@@ -215,9 +209,6 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
      r.outer_iterations >= options.max_outer_iterations || has_free_boundary_vertex<d>(in))
     return;
   const auto start = std::chrono::steady_clock::now();
-  const auto seconds_left = [&] {
-    return options.max_seconds - r.seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   // the eps steps left to the local runs, of the caller's budget
   const auto within_budget = [&](const Untangling_result& work) {
     Untangling_options o = options;
@@ -229,12 +220,11 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
   // (the regions of the local repair are cut meshes of their own, without
   // the links of a seamless problem: that gets the patient rerun)
   if(r.inverted_after <= local_repair_most_inverted && !in.has_links()) {
-    repaired = repair_locally<d>(in, within_budget(work), seconds_left(), work);
-  } else if(seconds_left() > 0) {
+    repaired = repair_locally<d>(in, within_budget(work), work);
+  } else if(!out_of_time(options)) {
     Untangling_input<d> rerun = in;
     rerun.positions = given;
     Untangling_options patient = within_budget(work);
-    patient.max_seconds = seconds_left();
     patient.max_outer_iterations = std::min(patient.max_outer_iterations, patient_rerun_eps_steps);
     patient.callback = options.progress_step;
     patient.stage_0_never_stalls = true;
@@ -242,7 +232,7 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
     add_local_work(work, first);
     repaired = reached_goal(first.status) ||
                (first.status == Untangling_status::INVERTED_ELEMENTS_LEFT &&
-                repair_locally<d>(rerun, within_budget(work), seconds_left(), work));
+                repair_locally<d>(rerun, within_budget(work), work));
     if(repaired) in.positions = std::move(rerun.positions);
   }
   add_local_work(r, work);

@@ -20,6 +20,7 @@
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
 #include <algorithm>
+#include <chrono>
 #include <new>
 #include <optional>
 #include <string>
@@ -47,9 +48,18 @@ Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_
 /// a fallback: it failed, on valid input, neither stopped nor out of budget.
 inline bool leaves_room_for_a_fallback(const Untangling_result& r, const Untangling_options& options)
 {
-  const bool out_of_budget = !(r.seconds < options.max_seconds) || r.outer_iterations >= options.max_outer_iterations;
+  const bool out_of_budget = out_of_time(options) || r.outer_iterations >= options.max_outer_iterations;
   return !reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT &&
          r.status != Untangling_status::STOPPED_BY_CALLBACK && !out_of_budget;
+}
+
+/// `options` with the eps steps that the runs of `spent` took off (the
+/// clock is shared: options.deadline).
+inline Untangling_options what_is_left_after(const Untangling_result& spent, const Untangling_options& options)
+{
+  Untangling_options o = options;
+  o.max_outer_iterations -= std::min(o.max_outer_iterations, spent.outer_iterations);
+  return o;
 }
 
 /// The direct untangling, and when it fails on a 2D disk with nothing fixed,
@@ -81,11 +91,8 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
     }
     const auto direct_map = in.positions;
     std::copy(start->begin(), start->end(), in.positions.begin());
-    Untangling_options remaining = options;
-    remaining.max_seconds = options.max_seconds - first.seconds;
-    remaining.max_outer_iterations = options.max_outer_iterations - first.outer_iterations;
     Phantom_elements<d> convex_phantoms;
-    Untangling_result convex = untangle_directly<d>(in, remaining, protection, &convex_phantoms);
+    Untangling_result convex = untangle_directly<d>(in, what_is_left_after(first, options), protection, &convex_phantoms);
     if(convex.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, convex)) {
       in.positions = direct_map;
       add_work(first, convex);
@@ -196,10 +203,8 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
         if(phantoms_used) *phantoms_used = Phantom_elements<d>();
         return *carried;
       }
-      Untangling_options remaining = options;
-      remaining.max_seconds = options.max_seconds - carried->seconds;
-      remaining.max_outer_iterations = options.max_outer_iterations - carried->outer_iterations;
-      Untangling_result r = untangle_directly_then_by_continuation<d>(in, remaining, protection, *rest, phantoms_used);
+      Untangling_result r = untangle_directly_then_by_continuation<d>(in, what_is_left_after(*carried, options),
+                                                                      protection, *rest, phantoms_used);
       add_work(r, *carried);
       return r;
     }
@@ -233,8 +238,7 @@ Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in
   // time limit (a failing one went on for 1,000 eps steps): see
   // direct_run_element_evaluations.
   const auto given = in.positions;
-  Untangling_options direct = options;
-  direct.max_seconds = options.max_seconds * 2 / 3;
+  Untangling_options direct = with_share_of_time(options, 2. / 3);
   direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
   if(d == 3) direct.max_energy_evaluations = direct_run_evaluations(in.elements.size());
   direct.give_up_on_stall = d == 3 && !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
@@ -246,12 +250,9 @@ Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in
   }
   const auto direct_map = in.positions;
   in.positions = given;
-  Untangling_options remaining = options;
-  remaining.max_seconds = options.max_seconds - first.seconds;
-  remaining.max_outer_iterations = options.max_outer_iterations - first.outer_iterations;
   Phantom_elements<d> continued_phantoms;
-  Untangling_result continued =
-    untangle_by_continuation<d>(in, remaining, protection, rest, first, &continued_phantoms);
+  Untangling_result continued = untangle_by_continuation<d>(in, what_is_left_after(first, options), protection, rest,
+                                                            first, &continued_phantoms);
   if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
     in.positions = direct_map;   // the direct result was the better one
     add_work(first, continued);
@@ -379,6 +380,9 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
                            const Protection_request<d>& requested = Protection_request<d>(),
                            Phantom_elements<d>* phantoms_used = nullptr, std::vector<Added_vertex>* added = nullptr)
 {
+  const auto start = std::chrono::steady_clock::now();
+  Untangling_options timed = options;
+  timed.deadline = std::min(options.deadline, deadline_after(options.max_seconds));
   try {
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
     if(in.has_cells() && options.refinement)
@@ -412,7 +416,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   try {
-    const Untangling_options metered = with_progress(options, progress);
+    const Untangling_options metered = with_progress(timed, progress);
     r = untangle_as_asked<d>(in, metered, protection, phantoms_used);
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
     repair_locally_after<d>(in, given, metered, r);
@@ -446,6 +450,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();   // (between the runs too)
   progress.finish();
   return r;
 }

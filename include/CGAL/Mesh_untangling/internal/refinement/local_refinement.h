@@ -150,18 +150,14 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
      in.phantom_elements > 0 || has_free_boundary_vertex<d>(in))
     return;
   const auto start = std::chrono::steady_clock::now();
-  const auto seconds_left = [&] {
-    return options.max_seconds - r.seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   // Each untangling of a refined problem has the caller's eps-step budget
   // (the fixed-connectivity run may have spent it); the time is shared.
   const auto within_budget = [&] {
     Untangling_options o = options;
-    o.max_seconds = seconds_left();
     o.callback = nullptr;
     return o;
   };
-  const auto out_of_budget = [&] { return !(seconds_left() > 0); };
+  const auto out_of_budget = [&] { return out_of_time(options); };
   Untangling_result work;
 
   Untangling_input<d> trial = in;
@@ -178,7 +174,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     for(const Edge& e : edges) {
       if(splits.size() >= options.refinement_budget || out_of_budget()) break;
       splits.push_back({split_edge<d>(trial, trial_given, e), e});
-      repaired = repair_locally<d>(trial, within_budget(), seconds_left(), work);
+      repaired = repair_locally<d>(trial, within_budget(), work);
       if(repaired) break;
     }
     if(repaired || splits.size() >= options.refinement_budget || out_of_budget()) break;
@@ -199,7 +195,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     if(!refine_without<d>(in, given, splits, i, trial.positions, fewer, fewer_given, fewer_splits)) continue;
     const Untangling_problem<d> P = make_untangling_problem<d>(fewer, options.scaling);
     if(!non_positive_elements<d>(fewer, P.reference_orientation).empty() &&
-       !repair_locally<d>(fewer, within_budget(), seconds_left(), work))
+       !repair_locally<d>(fewer, within_budget(), work))
       continue;
     trial = std::move(fewer);
     trial_given = std::move(fewer_given);
