@@ -56,7 +56,7 @@ void check_carried_bar(const std::string& motion, double degrees)
   std::vector<Eigen::Vector3d> rest;
   for(const auto& p : mesh.rest) rest.emplace_back(p[0], p[1], p[2]);
   const MI::Fixed_vertex_motion<3> path(in, rest, in.positions);
-  const MI::Carried_motion<3> carried(in, path);
+  const MI::Carried_motion<3> carried(in, rest, path);
   CHECK_MESSAGE(carried.carries(), motion << ": nothing carried");
   std::vector<Eigen::Vector3d> start = rest;
   for(std::size_t v : mesh.fixed) start[v] = in.positions[v];

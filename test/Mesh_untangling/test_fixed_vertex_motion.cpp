@@ -5,7 +5,9 @@
 // (internal/fixed_vertex_motion.h): exact ends, rigid groups that keep their
 // shape on the way (a straight line collapses a group turned by 180° at half
 // the motion), flat groups turned too, single vertices fitted together when
-// one rigid motion explains them, the others on straight lines.  End to
+// one rigid motion explains them, the others on straight lines; the screw
+// of a rigid motion (internal/rigid_motion.h), whose fractions and blends
+// turn about its axis (a bent end swings along its arc).  End to
 // end, benchmark_free_boundary --family cavities-kuhn measures it (two
 // cavities turned 180°, margin 6: 7.3 s by continuation, not locally
 // invertible after 60 s on straight lines).
@@ -133,10 +135,49 @@ void check_loose_vertices()
   CHECK((stretch.position(4, 0.5) - Eigen::Vector2d(0, 3.5)).norm() < 1e-12);
 }
 
+/// A 90° turn about the line through p (axis z; in 2D, the point p) as a
+/// screw: its fractions and its blends with the identity turn about p, at
+/// a fixed distance from it (the arc, not the chord), and the whole motion
+/// is the given one.
+template <int d>
+void check_screw_follows_the_arc(double degrees)
+{
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Matrix = Eigen::Matrix<double, d, d>;
+  const auto turn = [](double angle) {
+    Matrix r = Matrix::Identity();
+    r.template topLeftCorner<2, 2>() << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    return r;
+  };
+  Vector p = Vector::Zero(), x = Vector::Zero();
+  p(0) = 5;
+  x(1) = 1;
+  if constexpr(d == 3) x(2) = 0.5;   // (off the plane of p's circle: the axis is z)
+  const double angle = degrees * pi / 180;
+  // the rigid motion x -> p + R (x - p), given by centres 0 -> p - R p
+  const MI::Rigid_motion<d> screw(Vector::Zero(), p - turn(angle) * p, turn(angle));
+  CHECK_MESSAGE(std::abs(screw.angle() - angle) < 1e-12, degrees << "°: angle " << screw.angle());
+  CHECK_MESSAGE((screw.moved(x, 1) - (p + turn(angle) * (x - p))).norm() < 1e-12, degrees << "°: not the given motion");
+  CHECK((screw.moved(x, 0) - x).norm() == 0);
+  for(double f : {0.25, 0.5, 0.75}) {
+    const Vector expected = p + turn(f * angle) * (x - p);
+    CHECK_MESSAGE((screw.moved(x, f) - expected).norm() < 1e-12, degrees << "° at " << f << ": off the arc by "
+                                                                         << (screw.moved(x, f) - expected).norm());
+    MI::Rigid_motion<d> blend;   // f of the screw and 1 - f of the identity
+    blend.add(f, screw);
+    blend.add(1 - f, MI::Rigid_motion<d>());
+    CHECK_MESSAGE((blend.moved(x, 1) - expected).norm() < 1e-12, degrees << "°: the blend of " << f << " off the arc");
+  }
+}
+
 } // namespace
 
 int main()
 {
+  check_screw_follows_the_arc<2>(90);
+  check_screw_follows_the_arc<3>(90);
+  check_screw_follows_the_arc<3>(180);
+  check_screw_follows_the_arc<3>(1e-5);
   check_rigid_group();
   check_groups_on_straight_lines();
   check_flat_group();

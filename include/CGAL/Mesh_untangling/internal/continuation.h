@@ -172,7 +172,7 @@ public:
   Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
                const std::vector<Vector>& rest)
     : start_(std::chrono::steady_clock::now()), in_(in), options_(options), protection_(protection),
-      given_(in.positions), path_(in, rest, given_), carried_(in, path_),
+      given_(in.positions), path_(in, rest, given_), carried_(in, rest, path_),
       build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
   {}
 

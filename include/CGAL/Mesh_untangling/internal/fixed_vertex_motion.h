@@ -8,9 +8,9 @@
 // half the motion, and no step can untangle the map around it.  So each
 // connected group of fixed vertices moves as a rigid motion (the rotation
 // and translation that best fit its rest to its given positions, Kabsch's
-// fit by the singular value decomposition) whose angle grows with the
-// motion, plus the rest of its displacement (the residual of the fit) on
-// straight lines.  The vertices of groups that do not fix a rotation of
+// fit by the singular value decomposition) along its screw (rigid_motion.h:
+// the angle grows with the motion, about a fixed axis), plus the rest of
+// its displacement (the residual of the fit) on straight lines.  The vertices of groups that do not fix a rotation of
 // their own (single vertices; in 3D, lines) are fitted together, when one rigid
 // motion explains their displacement: two vertices of a 2D mesh swapped,
 // only they fixed, would otherwise meet halfway, where no map keeps them
@@ -20,9 +20,9 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_FIXED_VERTEX_MOTION_H
 
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/rigid_motion.h>
 
 #include <Eigen/Dense>
-#include <Eigen/Geometry>
 
 #include <cmath>
 #include <numeric>
@@ -79,10 +79,8 @@ public:
   {
     if(!(motion < 1)) return given_[v];
     if(group_of_[v] == none) return (1 - motion) * rest_[v] + motion * given_[v];
-    const Group& g = groups_[group_of_[v]];
-    const Vector fitted = g.given_centre + g.rotation * (rest_[v] - g.rest_centre);
-    const Vector centre = (1 - motion) * g.rest_centre + motion * g.given_centre;
-    return centre + rotation_at(g, motion) * (rest_[v] - g.rest_centre) + motion * (given_[v] - fitted);
+    const Rigid_motion<d>& rigid = groups_[group_of_[v]].motion;
+    return rigid.moved(rest_[v], motion) + motion * (given_[v] - rigid.moved(rest_[v], 1));
   }
 
   /// The largest angle (radians) of the groups' rigid motions: 0 when all move on straight lines.
@@ -90,7 +88,7 @@ public:
   {
     double angle = 0;
     for(const Group& g : groups_)
-      if(g.rigid) angle = std::max(angle, rotation_angle(g.rotation));
+      if(g.rigid) angle = std::max(angle, g.motion.angle());
     return angle;
   }
 
@@ -100,8 +98,7 @@ public:
   {
     std::vector<std::size_t> vertices;
     bool rigid = false;
-    Vector rest_centre = Vector::Zero(), given_centre = Vector::Zero();
-    Matrix rotation = Matrix::Identity();
+    Rigid_motion<d> motion;
   };
 
   /// The groups that move as rigid motions (the others move on straight lines).
@@ -157,9 +154,7 @@ private:
     for(std::size_t v : g.vertices) { rest.push_back(rest_[v]); given.push_back(given_[v]); }
     const std::optional<Matrix> rotation = best_rotation(rest, given);
     if(!rotation) return unfit(g);
-    const double count = double(g.vertices.size());
-    for(std::size_t v : g.vertices) { g.rest_centre += rest_[v] / count; g.given_centre += given_[v] / count; }
-    g.rotation = *rotation;
+    g.motion = Rigid_motion<d>(centroid(rest), centroid(given), *rotation);
     g.rigid = true;
   }
 
@@ -183,38 +178,24 @@ private:
       }
     const std::optional<Matrix> rotation = best_rotation(rest, given);
     if(!rotation) return;
-    const double count = double(g.vertices.size());
-    for(std::size_t i = 0; i < rest.size(); ++i) { g.rest_centre += rest[i] / count; g.given_centre += given[i] / count; }
+    const Vector rest_centre = centroid(rest), given_centre = centroid(given);
     double residual = 0, spread = 0;
     for(std::size_t i = 0; i < rest.size(); ++i) {
-      residual += (given[i] - g.given_centre - *rotation * (rest[i] - g.rest_centre)).squaredNorm();
-      spread += (rest[i] - g.rest_centre).squaredNorm();
+      residual += (given[i] - given_centre - *rotation * (rest[i] - rest_centre)).squaredNorm();
+      spread += (rest[i] - rest_centre).squaredNorm();
     }
     if(!(residual <= 0.01 * spread)) return;
-    g.rotation = *rotation;
+    g.motion = Rigid_motion<d>(rest_centre, given_centre, *rotation);
     g.rigid = true;
     for(std::size_t v : g.vertices) group_of_[v] = groups_.size();
     groups_.push_back(std::move(g));
   }
 
-  static double rotation_angle(const Matrix& r)
+  static Vector centroid(const std::vector<Vector>& points)
   {
-    if constexpr(d == 2) return std::abs(std::atan2(r(1, 0), r(0, 0)));
-    else return Eigen::AngleAxisd(r).angle();
-  }
-
-  /// The rotation of `g` at `motion`: its angle times the motion, about the same axis.
-  static Matrix rotation_at(const Group& g, double motion)
-  {
-    if constexpr(d == 2) {
-      const double angle = motion * std::atan2(g.rotation(1, 0), g.rotation(0, 0));
-      Matrix r;
-      r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-      return r;
-    } else {
-      const Eigen::Quaterniond turn(g.rotation);
-      return Eigen::Quaterniond::Identity().slerp(motion, turn).toRotationMatrix();
-    }
+    Vector c = Vector::Zero();
+    for(const Vector& p : points) c += p / double(points.size());
+    return c;
   }
 
   const std::vector<Vector>& rest_;
