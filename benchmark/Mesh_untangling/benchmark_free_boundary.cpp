@@ -45,7 +45,7 @@ namespace {
 
 const char* const usage_text =
   "usage: benchmark_free_boundary [--family NAME,...] [--quick|--large] [--time-limit SECONDS] [--threads N]\n"
-  "                               [--instance NAME,...] [--verbose] [--trace] [--write DIR] [--list]\n"
+  "                               [--instance NAME,...] [--data DIR] [--verbose] [--trace] [--write DIR] [--list]\n"
   "\n"
   "Generates the seeded instances of the free-boundary stress families, untangles each through\n"
   "CGAL::untangle_mesh (triangles) or CGAL::untangle_simplex_soup (tetrahedra) with the default\n"
@@ -60,6 +60,9 @@ const char* const usage_text =
   "                        running 15 s past it is killed\n"
   "  --threads N           at most N threads in the untangler (default: TBB's choice)\n"
   "  --instance NAME,...   only these instances (names as --verbose or --list prints them)\n"
+  "  --data DIR            the folder of other groups' meshes that the family real-meshes reads\n"
+  "                        (default: the build's MESH_UNTANGLING_DATA_DIR, ../shared/data); without\n"
+  "                        them that family has no instance\n"
   "  --verbose             one line per instance with its failure figures\n"
   "  --trace               one line per eps step on stderr (motion of the continuation, stage, eps,\n"
   "                        min det J, non-positive elements, seconds)\n"
@@ -81,6 +84,7 @@ struct Arguments
   std::vector<std::string> instances;
   bool verbose = false, list = false, trace = false;
   std::string write_directory;
+  std::string data_directory = MESH_UNTANGLING_DATA_DIR;
 };
 
 std::vector<std::string> split_list(const std::string& text)
@@ -143,6 +147,9 @@ Arguments parse_arguments(int argc, char** argv)
       if(!parse_positive(v, threads) || threads != std::floor(threads) || threads > max_thread_count)
         throw Usage_error{"--threads: '" + v + "' is not a positive number of threads"};
       a.threads = int(threads);
+    } else if(argument == "--data") {
+      a.data_directory = value();
+      if(a.data_directory.empty()) throw Usage_error{"--data needs a folder"};
     } else if(argument == "--write") {
       a.write_directory = value();
       if(a.write_directory.empty()) throw Usage_error{"--write needs a folder"};
@@ -356,7 +363,10 @@ int main(int argc, char** argv)
     a = parse_arguments(argc, argv);
     std::size_t selected = 0;
     for(const std::string& f : a.families) {
-      std::vector<Family_instance> instances = free_boundary_family(f, a.size);
+      std::vector<Family_instance> instances = free_boundary_family(f, a.size, a.data_directory);
+      if(instances.empty() && a.instances.empty())
+        std::cerr << "benchmark_free_boundary: " << f << ": no instance (its meshes are not under '" << a.data_directory
+                  << "'): skipped\n";
       if(!a.instances.empty())
         instances.erase(std::remove_if(instances.begin(), instances.end(), [&](const Family_instance& i) {
           return std::find(a.instances.begin(), a.instances.end(), i.name) == a.instances.end();
@@ -364,7 +374,9 @@ int main(int argc, char** argv)
       selected += instances.size();
       if(!instances.empty()) families.emplace_back(f, std::move(instances));
     }
-    if(selected == 0) throw Usage_error{"--instance: no instance of the selected families has that name (--list shows them)"};
+    if(selected == 0)
+      throw Usage_error{a.instances.empty() ? "no instance to run: the selected families have none here"
+                                            : "--instance: no instance of the selected families has that name (--list shows them)"};
   } catch(const Usage_error& e) {
     std::cerr << "benchmark_free_boundary: " << e.message << "\n\n" << usage_text;
     return 2;

@@ -43,6 +43,8 @@ refused "benchmark_free_boundary: threads 1.5" "--threads: '1.5' is not a positi
 refused "benchmark_free_boundary: quick and large" "--quick and --large exclude each other" "$F" --quick --large
 refused "benchmark_free_boundary: unknown instance" "--instance: no instance of the selected families has that name" "$F" --instance nothing-like-this
 refused "benchmark_free_boundary: unknown argument" "unknown argument '--fast'" "$F" --fast
+refused "benchmark_free_boundary: data without value" "--data needs a value" "$F" --data
+refused "benchmark_free_boundary: real meshes without their data" "no instance to run: the selected families have none here" "$F" --family real-meshes --data "$T/no-such-folder"
 # the instances it lists are the ones --instance selects; --write saves them for the command-line tool
 checks=$((checks + 1))
 if ! "$F" --quick --family twelve-star --instance twelve-star-fixed1-tilt80-noise0.09-s1 --write "$T/w" > "$T/out" 2> "$T/err" \

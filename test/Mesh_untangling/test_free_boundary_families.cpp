@@ -6,6 +6,8 @@
 // locally invertible (exact checks) with every fixed vertex bitwise in
 // place, and, where a valid map with a simple boundary is known, with a
 // simple boundary image.  The generators' bad parameters are refused.
+// The real meshes come from ../shared/data (the first argument); without
+// it their family is skipped, and said so.
 // benchmark_free_boundary runs the families at full size.
 #include "free_boundary_families.h"
 #include "generators.h"
@@ -60,8 +62,9 @@ void check_refused(const std::string& what, const Make& make)
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
+  const std::string data = argc > 1 ? argv[1] : "";
   // 2D, nothing fixed
   for(const Family_instance& i : free_boundary_family("ruffled-disk", Family_size::QUICK)) {
     if(i.name.find("tilt70") != std::string::npos)   // the kind: a centre of valence 72 seen from 70°
@@ -122,12 +125,20 @@ int main()
     check_instance(i.name, i.make(), i.boundary_should_be_simple);
   }
 
-  // every family has instances, and the names are unique
+  // meshes of other groups: the armadillo held by both ends, one turned by 60°
+  const std::vector<Family_instance> real = free_boundary_family("real-meshes", Family_size::QUICK, data);
+  if(real.empty()) std::printf("SKIPPED: real-meshes: its meshes are not under '%s'\n", data.c_str());
+  for(const Family_instance& i : real) {
+    check_tangled(i.name, i.make(), 1);
+    check_instance(i.name, i.make(), i.boundary_should_be_simple);
+  }
+
+  // every family has instances (the real meshes: with their data), and the names are unique
   std::vector<std::string> names;
   for(const auto& f : free_boundary_families())
     for(Family_size size : {Family_size::QUICK, Family_size::DEFAULT}) {
-      const auto instances = free_boundary_family(f.name, size);
-      CHECK_MESSAGE(!instances.empty(), f.name << ": no instance");
+      const auto instances = free_boundary_family(f.name, size, data);
+      CHECK_MESSAGE(!instances.empty() || (f.name == "real-meshes" && real.empty()), f.name << ": no instance");
       for(const auto& i : instances) names.push_back(i.name + (size == Family_size::QUICK ? "/q" : "/d"));
     }
   std::sort(names.begin(), names.end());
@@ -145,6 +156,13 @@ int main()
   check_refused("locked deformation 'melt'", [] { return make_locked_region(4, "ball", "melt", 90); });
   // a mesh too coarse for its deformation makes an instance with no solution
   check_refused("a twist of 720° on a 3^3 cube", [] { return make_locked_region(3, "bottom", "twist", 720); });
+  check_refused("a real mesh that is not there", [] { return read_real_tetrahedra("/no/such/mesh.vtk"); });
+  if(!real.empty()) {
+    const Mesh_file part = read_real_tetrahedra(data + "/cuboidblocks/rockerarm.hexex_block256/object.vtk");
+    // (its slivers: a turn of 10° inverts some of them already)
+    check_refused("the rockerarm's own mesh, ends turned by 30°", [&] { return make_turned_ends(part, 0.12, 30); });
+    check_refused("a real part locked in region 'top'", [&] { return make_real_locked_region(part, "top", "wave", 0.1); });
+  }
 
   std::cout << (test::failures() ? "FAILED" : "passed") << "\n";
   return test::exit_code();

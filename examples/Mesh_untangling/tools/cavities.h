@@ -6,6 +6,7 @@
 // turns the boundary of each cavity by 135° about the vertical axis through
 // its centre, which inverts the tetrahedra around it.  The cavity boundaries
 // are fixed, the outer boundary is free, the other vertices start at rest.
+// And real solids meshed again with quality (remesh_with_tetgen).
 //
 // Meshed with TetGen, which is AGPL: this file and its library are for the
 // tests, examples and benchmark only, never for the package's headers.
@@ -13,6 +14,8 @@
 #define MESH_UNTANGLING_TOOLS_CAVITIES_H
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+
+#include <cstddef>
 
 namespace Mesh_untangling_tools {
 
@@ -36,6 +39,19 @@ struct Cavities_options
 /// boundary vertices as `fixed`.  Deterministic.  Throws std::runtime_error
 /// when TetGen fails, std::invalid_argument on a size that is not in (0, 1].
 CGAL::Mesh_untangling::IO::Mesh_file make_cavities_problem(const Cavities_options& options = Cavities_options());
+
+/// The solid bounded by the boundary triangles of the tetrahedral mesh `m`
+/// (its rest, or its map when it has no rest), meshed again by TetGen into
+/// about `tetrahedra` elements (radius-edge ratio 1.4, dihedral angles of
+/// at least `min_dihedral_degrees`), positively oriented; map = rest,
+/// nothing fixed.  Other groups' meshes of real parts have slivers (the
+/// CuboidBlocks objects: about 1,000 tetrahedra of volume below 1e-3 of
+/// their longest edge cubed) that a turn of 10 degrees already inverts, so
+/// no deformation of them is a known solution.  Throws std::runtime_error
+/// when TetGen fails (a boundary that is not a closed surface),
+/// std::invalid_argument for a mesh without tetrahedra or a count of 0.
+CGAL::Mesh_untangling::IO::Mesh_file remesh_with_tetgen(const CGAL::Mesh_untangling::IO::Mesh_file& m,
+                                                        std::size_t tetrahedra, double min_dihedral_degrees);
 
 } // namespace Mesh_untangling_tools
 

@@ -9,6 +9,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
@@ -22,6 +23,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <sstream>
@@ -33,6 +35,14 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 double radians(double degrees) { return degrees * pi / 180; }
+
+/// `value` as a name part: 0.15, 120 (the shortest form).
+std::string format(double value)
+{
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
 
 using Vec3 = std::array<double, 3>;
 
@@ -301,11 +311,33 @@ Mesh_file make_bar(std::size_t nx, std::size_t w, const std::string& motion, dou
 
 namespace {
 
-/// Locks about a third of the vertices of a mesh of the box [0, extent]
-/// (see make_locked_region; the region and the deformation are those of the
-/// unit cube, stretched to the box).
-void lock_region(Mesh_file& m, const Vec3& extent, const std::string& region, const std::string& deformation,
-                 double strength)
+/// Throws std::invalid_argument when `witness`, a map of every vertex of
+/// `m`, inverts a tetrahedron of its rest (against the rest's orientation):
+/// the instance then has no known solution (a mesh too coarse for the
+/// deformation: a fixed tetrahedron inverted, or a free vertex with no place
+/// left in its star), and no solver could be asked to find one.
+void require_valid_witness(const Mesh_file& m, const std::vector<Vec3>& witness, const std::string& what)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto point = [](const Vec3& p) { return K::Point_3(p[0], p[1], p[2]); };
+  std::size_t inverted = 0;
+  for(const auto& t : m.simplices) {
+    const CGAL::Orientation rest = CGAL::orientation(point(m.rest[t[0]]), point(m.rest[t[1]]), point(m.rest[t[2]]),
+                                                     point(m.rest[t[3]]));
+    if(rest == CGAL::COPLANAR) throw std::invalid_argument(what + ": a rest tetrahedron is flat");
+    if(CGAL::orientation(point(witness[t[0]]), point(witness[t[1]]), point(witness[t[2]]), point(witness[t[3]])) != rest)
+      ++inverted;
+  }
+  if(inverted > 0)
+    throw std::invalid_argument(what + ": the mesh does not resolve the deformation (" + std::to_string(inverted) +
+                                " tetrahedra inverted by it): no valid map is known");
+}
+
+/// Locks about a third of the vertices of a mesh of the box [low, low +
+/// extent] (see make_locked_region; the region and the deformation are
+/// those of the unit cube, stretched to the box).
+void lock_region(Mesh_file& m, const Vec3& low, const Vec3& extent, const std::string& region,
+                 const std::string& deformation, double strength)
 {
   if(region != "bottom" && region != "middle" && region != "ball")
     throw std::invalid_argument("locked region: unknown region '" + region + "' (bottom, middle, ball)");
@@ -323,8 +355,11 @@ void lock_region(Mesh_file& m, const Vec3& extent, const std::string& region, co
   // twist once turned the box itself, about its axis at a rate set for the
   // unit cube: a shear of 2.9 at the corners of the 4 x 2 x 2 cuboid, which
   // its TetGen mesh at size 0.4 does not resolve.)
+  const auto unit = [&](const Vec3& p) -> Vec3 {
+    return {(p[0] - low[0]) / extent[0], (p[1] - low[1]) / extent[1], (p[2] - low[2]) / extent[2]};
+  };
   const auto deformed = [&](const Vec3& p) -> Vec3 {
-    const Vec3 q = {p[0] / extent[0], p[1] / extent[1], p[2] / extent[2]};
+    const Vec3 q = unit(p);
     Vec3 r;
     if(deformation == "twist")
       r = turned_about_vertical(q, 0.5, 0.5, radians(strength) * (0.5 + q[2]));
@@ -332,7 +367,7 @@ void lock_region(Mesh_file& m, const Vec3& extent, const std::string& region, co
       r = {q[0] + strength * std::sin(pi * q[1]) * std::sin(2 * pi * q[2]),
            q[1] + strength * std::sin(pi * q[2]) * std::sin(2 * pi * q[0]),
            q[2] + strength * std::sin(pi * q[0]) * std::sin(2 * pi * q[1])};
-    return {r[0] * extent[0], r[1] * extent[1], r[2] * extent[2]};
+    return {low[0] + r[0] * extent[0], low[1] + r[1] * extent[1], low[2] + r[2] * extent[2]};
   };
   m.map = m.rest;
   std::vector<std::size_t> fixed;
@@ -340,24 +375,42 @@ void lock_region(Mesh_file& m, const Vec3& extent, const std::string& region, co
   for(std::size_t v = 0; v < m.rest.size(); ++v) {
     const Vec3& p = m.rest[v];
     witness[v] = deformed(p);
-    if(!locked({p[0] / extent[0], p[1] / extent[1], p[2] / extent[2]})) continue;
+    if(!locked(unit(p))) continue;
     fixed.push_back(v);
     m.map[v] = witness[v];
   }
   set_fixed(m, fixed);
-  // The instance must have a solution: the whole mesh deformed is one when
-  // it inverts no tetrahedron (it keeps the fixed vertices where they are).
-  // A mesh too coarse for the deformation has none (a fixed tetrahedron
-  // inverted, or a free vertex with no place left in its star), and no
-  // solver could untangle it.
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const auto point = [&](std::size_t v) { return K::Point_3(witness[v][0], witness[v][1], witness[v][2]); };
-  std::size_t inverted = 0;
-  for(const auto& t : m.simplices)
-    if(CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3])) != CGAL::POSITIVE) ++inverted;
-  if(inverted > 0)
-    throw std::invalid_argument("locked region: the mesh does not resolve the " + deformation + " (" +
-                                std::to_string(inverted) + " tetrahedra inverted by it): no valid map is known");
+  // (the whole mesh deformed keeps the fixed vertices where they are)
+  require_valid_witness(m, witness, "locked region, " + deformation);
+}
+
+} // namespace
+
+Mesh_file read_real_tetrahedra(const std::string& path)
+{
+  Mesh_file m;
+  try {
+    m = CGAL::Mesh_untangling::IO::read_VTK(path);
+  } catch(const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  if(m.simplex_size != 4 || m.simplices.empty()) throw std::invalid_argument(path + ": no tetrahedra");
+  m.rest = m.map;
+  m.rest_dimension = 3;
+  m.has_fixed = false;
+  m.fixed.clear();
+  return m;
+}
+
+namespace {
+
+/// The smallest corner of the bounding box of `points`, and its extent.
+std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& points)
+{
+  Vec3 low = points.front(), high = points.front();
+  for(const Vec3& p : points)
+    for(int c = 0; c < 3; ++c) { low[c] = std::min(low[c], p[c]); high[c] = std::max(high[c], p[c]); }
+  return {low, {high[0] - low[0], high[1] - low[1], high[2] - low[2]}};
 }
 
 } // namespace
@@ -367,7 +420,54 @@ Mesh_file make_locked_region(std::size_t n, const std::string& region, const std
   Mesh_file m = make_box_grid(n, n, n, [](std::size_t, std::size_t, std::size_t) { return true; });
   for(auto& p : m.rest)
     for(double& c : p) c /= double(n);
-  lock_region(m, {1., 1., 1.}, region, deformation, strength);
+  lock_region(m, {0., 0., 0.}, {1., 1., 1.}, region, deformation, strength);
+  return m;
+}
+
+Mesh_file make_turned_ends(Mesh_file solid, double band, double degrees)
+{
+  Mesh_file& m = solid;
+  const auto [low, extent] = bounding_box(m.rest);
+  const int axis = int(std::max_element(extent.begin(), extent.end()) - extent.begin());
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;   // the plane the turn acts in
+  const auto height = [&](const Vec3& p) { return (p[axis] - low[axis]) / extent[axis]; };
+  double ca = 0, cb = 0;   // the turned end's centroid, across the axis
+  std::size_t turned = 0;
+  for(const Vec3& p : m.rest)
+    if(height(p) >= 1 - band) { ca += p[a]; cb += p[b]; ++turned; }
+  if(turned == 0) throw std::invalid_argument("turned ends: no vertex in the turned band");
+  ca /= double(turned);
+  cb /= double(turned);
+  const auto turned_by = [&](const Vec3& p, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle), x = p[a] - ca, y = p[b] - cb;
+    Vec3 q = p;
+    q[a] = ca + c * x - s * y;
+    q[b] = cb + s * x + c * y;
+    return q;
+  };
+  std::vector<Vec3> witness(m.rest.size());
+  std::vector<std::size_t> fixed;
+  m.map = m.rest;
+  for(std::size_t v = 0; v < m.rest.size(); ++v) {
+    const double h = height(m.rest[v]);
+    const double ramp = std::clamp((h - band) / (1 - 2 * band), 0., 1.);
+    witness[v] = turned_by(m.rest[v], radians(degrees) * ramp);
+    if(h <= band || h >= 1 - band) {
+      fixed.push_back(v);
+      m.map[v] = witness[v];
+    }
+  }
+  set_fixed(m, fixed);
+  require_valid_witness(m, witness, "ends turned by " + format(degrees) + " degrees");
+  return m;
+}
+
+Mesh_file make_real_locked_region(Mesh_file solid, const std::string& region, const std::string& deformation,
+                                  double strength)
+{
+  Mesh_file& m = solid;
+  const auto [low, extent] = bounding_box(m.rest);
+  lock_region(m, low, extent, region, deformation, strength);
   return m;
 }
 
@@ -384,7 +484,7 @@ Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region,
   // the bound of 15 degrees, 0 up to a twist of 108 degrees at sizes 0.4 and 0.2.
   o.min_dihedral_degrees = 15;
   Mesh_file m = make_cavities_problem(o);
-  lock_region(m, {4., 2., 2.}, region, deformation, strength);
+  lock_region(m, {0., 0., 0.}, {4., 2., 2.}, region, deformation, strength);
   return m;
 }
 #endif
@@ -393,13 +493,6 @@ Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region,
 // Families
 
 namespace {
-
-std::string format(double value)
-{
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 std::size_t count_for(Family_size size, std::size_t quick, std::size_t normal, std::size_t large)
 {
@@ -623,6 +716,67 @@ std::vector<Family_instance> tetgen_locked_regions(Family_size size)
 }
 #endif
 
+/// Meshes of other groups (../shared/data): a scanned animal (as given,
+/// 24k tets) and, with TetGen, real shapes meshed again with quality (the
+/// CuboidBlocks parts, whose own meshes have slivers: see
+/// remesh_with_tetgen), the animal at the size.  Strengths are what
+/// each mesh resolves (the witness checks refuse more: 120° for the meshed
+/// animal, 60° for the joint, the ski jump's ends turned by 45°, its
+/// waves, the i02c part).
+std::vector<Family_instance> real_meshes(Family_size size, const std::string& data_directory)
+{
+  namespace fs = std::filesystem;
+  std::vector<Family_instance> out;
+  if(data_directory.empty()) return out;
+  const std::string armadillo = (fs::path(data_directory) / "lim" / "armadillo-598-rest.vtk").string();
+  const auto block = [&](const std::string& name) {
+    return (fs::path(data_directory) / "cuboidblocks" / name / "object.vtk").string();
+  };
+  // a solid: the file's mesh, or (tetrahedra > 0) TetGen's of its shape
+  const auto solid = [](const std::string& path, std::size_t tetrahedra) {
+    Mesh_file m = read_real_tetrahedra(path);
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+    if(tetrahedra > 0) m = remesh_with_tetgen(m, tetrahedra, 15);
+#else
+    (void)tetrahedra;
+#endif
+    return m;
+  };
+  const auto add_turned = [&](const std::string& mesh, const std::string& path, std::size_t tetrahedra, double degrees) {
+    if(!fs::is_regular_file(path)) return;
+    out.push_back({"real-meshes", mesh + "-ends-turned" + format(degrees), true,
+                   [=] { return make_turned_ends(solid(path, tetrahedra), 0.12, degrees); }});
+  };
+  const auto add_locked = [&](const std::string& mesh, const std::string& path, std::size_t tetrahedra,
+                              const std::string& region, const std::string& deformation, double strength) {
+    if(!fs::is_regular_file(path)) return;
+    out.push_back({"real-meshes", mesh + "-locked-" + region + "-" + deformation + format(strength), true,
+                   [=] { return make_real_locked_region(solid(path, tetrahedra), region, deformation, strength); }});
+  };
+  if(size == Family_size::QUICK) {
+    add_turned("armadillo598", armadillo, 0, 60);
+    return out;
+  }
+  for(double degrees : {60., 120.}) add_turned("armadillo598", armadillo, 0, degrees);
+  add_locked("armadillo598", armadillo, 0, "middle", "twist", 90);
+  add_locked("armadillo598", armadillo, 0, "ball", "wave", 0.1);
+  add_locked("armadillo598", armadillo, 0, "bottom", "twist", 120);
+#ifdef MESH_UNTANGLING_WITH_TETGEN
+  // (the counts asked of TetGen give about 54k tets for the armadillo, 21k
+  // for the joint, 16k for the rocker arm, 11k for the ski jump)
+  add_turned("armadillo-tetgen", armadillo, 38000, 90);
+  add_locked("armadillo-tetgen", armadillo, 38000, "middle", "twist", 90);
+  add_locked("armadillo-tetgen", armadillo, 38000, "ball", "wave", 0.1);
+  add_turned("joint-tetgen", block("joint.hexex_block73"), 50000, 45);
+  add_turned("rockerarm-tetgen", block("rockerarm.hexex_block344"), 50000, 90);
+  add_locked("rockerarm-tetgen", block("rockerarm.hexex_block344"), 50000, "middle", "twist", 90);
+  add_locked("rockerarm-tetgen", block("rockerarm.hexex_block344"), 50000, "bottom", "twist", 90);
+  add_locked("skijump-tetgen", block("n03c_skijump_box_cyl.hexex_block54"), 20000, "middle", "twist", 90);
+  add_locked("skijump-tetgen", block("n03c_skijump_box_cyl.hexex_block54"), 20000, "bottom", "twist", 90);
+#endif
+  return out;
+}
+
 } // namespace
 
 std::vector<Family_description> free_boundary_families()
@@ -643,12 +797,16 @@ std::vector<Family_description> free_boundary_families()
 #ifdef MESH_UNTANGLING_WITH_TETGEN
     {"locked-region-tetgen", "3D: a third of a TetGen cuboid with two cavities (slab or ball) deformed and fixed, the rest at rest"},
 #endif
+    {"real-meshes", "3D: other groups' meshes (../shared/data: the armadillo; with TetGen, mechanical parts meshed "
+                    "again), both ends held and one turned 60-120°, or a third locked at a deformed position"},
   };
   return f;
 }
 
-std::vector<Family_instance> free_boundary_family(const std::string& family, Family_size size)
+std::vector<Family_instance> free_boundary_family(const std::string& family, Family_size size,
+                                                  const std::string& data_directory)
 {
+  if(family == "real-meshes") return real_meshes(size, data_directory);
   if(family == "ruffled-disk") return ruffled_disks(size);
   if(family == "formed-sheet") return formed_sheets(size);
   if(family == "rolled-strip") return rolled_strips(size);

@@ -100,6 +100,30 @@ Mesh_file make_locked_region(std::size_t n, const std::string& region, const std
 Mesh_file make_tetgen_locked_region(double mesh_size, const std::string& region, const std::string& deformation,
                                     double strength);
 
+/// The tetrahedra of the VTK file `path` (other groups' meshes), its points
+/// as the rest and the map, nothing fixed; throws std::invalid_argument
+/// when it cannot be read as tetrahedra.
+Mesh_file read_real_tetrahedra(const std::string& path);
+
+/// Real solids (`solid`: a mesh whose rest is its shape), posed as the
+/// issue's new users pose them.  Each has a solution: the whole mesh
+/// deformed, which must invert no tetrahedron (against the rest's
+/// orientation, whichever sign it has); both throw std::invalid_argument
+/// when it does.
+///
+/// The vertices within `band` (a fraction) of both ends of the mesh's
+/// longest axis fixed, those of the last end turned by `degrees` about that
+/// axis (through their centroid), the rest at rest: a scanned animal held
+/// by its feet with its head turned.  The witness turns each vertex by the
+/// angle ramped linearly between the two bands.
+Mesh_file make_turned_ends(Mesh_file solid, double band, double degrees);
+
+/// A third of the vertices (`region` of its bounding box, as
+/// make_locked_region) moved by `deformation` and fixed, the rest at rest:
+/// a real part with a region locked at a deformed position.
+Mesh_file make_real_locked_region(Mesh_file solid, const std::string& region, const std::string& deformation,
+                                  double strength);
+
 // ---------------------------------------------------------------------------
 // Families
 
@@ -121,8 +145,11 @@ struct Family_description
 /// Every family, in the benchmark's order (the TetGen one only when it is built).
 std::vector<Family_description> free_boundary_families();
 
-/// The seeded instances of `family`; throws std::invalid_argument for an unknown family.
-std::vector<Family_instance> free_boundary_family(const std::string& family, Family_size size);
+/// The seeded instances of `family`; throws std::invalid_argument for an
+/// unknown family.  The family of real meshes reads them from
+/// `data_directory` (../shared/data), and has no instance when it lacks them.
+std::vector<Family_instance> free_boundary_family(const std::string& family, Family_size size,
+                                                  const std::string& data_directory = "");
 
 // ---------------------------------------------------------------------------
 // Judge
