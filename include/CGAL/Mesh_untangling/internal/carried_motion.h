@@ -30,6 +30,7 @@
 #include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
 #include <CGAL/Mesh_untangling/internal/rigid_motion.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -94,6 +95,11 @@ private:
       for(int i = 0; i <= d; ++i)
         for(int j = 0; j <= d; ++j)
           if(i != j) neighbours[in.elements[k][i]].push_back(in.elements[k][j]);
+    // each edge once: a 3D edge is in about five tetrahedra, and every search relaxes it
+    for(std::vector<std::size_t>& around : neighbours) {
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+    }
     std::vector<std::vector<double>> weights(groups.size(), std::vector<double>(n, 0.));
     std::vector<double> total(n, 0.);
     std::vector<std::size_t> on_group(n, groups.size());   // (none)
