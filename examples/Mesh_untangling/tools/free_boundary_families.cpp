@@ -114,10 +114,21 @@ Mesh_file make_box_grid(std::size_t nx, std::size_t ny, std::size_t nz, const Ke
   return m;
 }
 
+/// `p` turned by `angle` about the line parallel to coordinate axis `axis`
+/// through (ca, cb), the coordinates that follow it (y, z for x; z, x for y; x, y for z).
+Vec3 turned_about_axis(const Vec3& p, int axis, double ca, double cb, double angle)
+{
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  const double c = std::cos(angle), s = std::sin(angle), x = p[a] - ca, y = p[b] - cb;
+  Vec3 q = p;
+  q[a] = ca + c * x - s * y;
+  q[b] = cb + s * x + c * y;
+  return q;
+}
+
 Vec3 turned_about_vertical(const Vec3& p, double cx, double cy, double angle)
 {
-  const double c = std::cos(angle), s = std::sin(angle), x = p[0] - cx, y = p[1] - cy;
-  return {cx + c * x - s * y, cy + s * x + c * y, p[2]};
+  return turned_about_axis(p, 2, cx, cy, angle);
 }
 
 } // namespace
@@ -438,20 +449,13 @@ Mesh_file make_turned_ends(Mesh_file solid, double band, double degrees)
   if(turned == 0) throw std::invalid_argument("turned ends: no vertex in the turned band");
   ca /= double(turned);
   cb /= double(turned);
-  const auto turned_by = [&](const Vec3& p, double angle) {
-    const double c = std::cos(angle), s = std::sin(angle), x = p[a] - ca, y = p[b] - cb;
-    Vec3 q = p;
-    q[a] = ca + c * x - s * y;
-    q[b] = cb + s * x + c * y;
-    return q;
-  };
   std::vector<Vec3> witness(m.rest.size());
   std::vector<std::size_t> fixed;
   m.map = m.rest;
   for(std::size_t v = 0; v < m.rest.size(); ++v) {
     const double h = height(m.rest[v]);
     const double ramp = std::clamp((h - band) / (1 - 2 * band), 0., 1.);
-    witness[v] = turned_by(m.rest[v], radians(degrees) * ramp);
+    witness[v] = turned_about_axis(m.rest[v], axis, ca, cb, radians(degrees) * ramp);
     if(h <= band || h >= 1 - band) {
       fixed.push_back(v);
       m.map[v] = witness[v];
