@@ -11,7 +11,8 @@
 // its turn.  The first step of a continuation starts its free vertices
 // carried along by the rigid groups of fixed vertices (carried_motion.h): a
 // bar twisted by 180° or bent by 90° is locally invertible there already,
-// with its fixed vertices exactly in place.
+// with its fixed vertices exactly in place; a ball locked at a wave is
+// once relaxed as rigidly as possible (rigid_relaxation.h).
 // Usage: test_continuation_policy
 
 #include "free_boundary_families.h"
@@ -102,6 +103,56 @@ void check_untangled_from_carried_start()
           .is_locally_invertible());
 }
 
+/// Not positive tetrahedra of `x` against the rest's orientations.
+std::size_t not_positive_against_rest(const Mesh_file& mesh, const std::vector<Eigen::Vector3d>& x)
+{
+  std::vector<std::array<double, 3>> points;
+  for(const auto& p : x) points.push_back({p.x(), p.y(), p.z()});
+  const auto rest = CGAL::Mesh_untangling::simplex_orientations<3>(mesh.rest, mesh.simplices);
+  const auto now = CGAL::Mesh_untangling::simplex_orientations<3>(points, mesh.simplices);
+  std::size_t count = 0;
+  for(std::size_t k = 0; k < now.size(); ++k) count += now[k] != rest[k];
+  return count;
+}
+
+/// A ball locked at a wave, which no rigid motion explains: the blend of
+/// the groups' motions (the best fit's, everywhere) inverts tetrahedra
+/// around the ball; the continuation's carried map, relaxed as rigidly as
+/// possible from there (rigid_relaxation.h), inverts none, its fixed
+/// vertices bitwise at their given positions; and the automatic policy
+/// untangles the problem from it in one step, without phantoms.
+void check_relaxed_locked_ball()
+{
+  const Mesh_file mesh = make_locked_region(6, "ball", "wave", 0.15);
+  MI::Untangling_input<3> in = tetrahedral_problem(mesh);
+  std::vector<Eigen::Vector3d> rest;
+  for(const auto& p : mesh.rest) rest.emplace_back(p[0], p[1], p[2]);
+  const MI::Fixed_vertex_motion<3> path(in, rest, in.positions);
+  std::vector<Eigen::Vector3d> blended = MI::Carried_motion<3>(in, rest, path).carry(rest, 0, 1, in.is_fixed);
+  for(std::size_t v : mesh.fixed) blended[v] = in.positions[v];
+  const MI::Untangling_options options;
+  const MI::Protection_request<3> protection;
+  MI::Continuation_steps<3> steps(in, options, protection, rest);
+  const std::vector<Eigen::Vector3d> relaxed = steps.carried(rest, 0, 1);
+  const std::size_t blended_inverted = not_positive_against_rest(mesh, blended);
+  const std::size_t relaxed_inverted = not_positive_against_rest(mesh, relaxed);
+  std::printf("ball of a Kuhn cube (6 cells) locked at a wave 0.15: %zu tetrahedra not positive blended, %zu relaxed\n",
+              blended_inverted, relaxed_inverted);
+  CHECK_MESSAGE(blended_inverted > 0, "the blend alone untangles the ball: the check shows nothing");
+  CHECK_MESSAGE(relaxed_inverted == 0, relaxed_inverted << " tetrahedra not positive in the relaxed carried map");
+  CHECK_MESSAGE(steps.inverted_elements(relaxed) == relaxed_inverted, "the relaxation counts another number");
+  for(std::size_t v : mesh.fixed) CHECK_MESSAGE(relaxed[v] == in.positions[v], "fixed vertex " << v << " moved");
+
+  const auto given = in.positions;
+  const auto r = MI::untangle<3>(in, options);
+  std::printf("  untangled: %s, %zu continuation steps, %zu phantoms\n", CGAL::Mesh_untangling::to_string(r.status).c_str(),
+              r.continuation_steps, r.number_of_phantom_elements);
+  CHECK_MESSAGE(r.status == CGAL::Mesh_untangling::Untangling_status::SUCCESS, "not locally invertible: " << r.message);
+  CHECK_MESSAGE(r.continuation_steps == 1, r.continuation_steps << " continuation steps");
+  CHECK_MESSAGE(not_positive_against_rest(mesh, in.positions) == 0, "inverted tetrahedra reported as success");
+  for(std::size_t v : mesh.fixed) CHECK_MESSAGE(in.positions[v] == given[v], "fixed vertex " << v << " moved");
+}
+
 } // namespace
 
 int main()
@@ -109,6 +160,7 @@ int main()
   check_carried_bar("twist", 180);
   check_carried_bar("bend", 90);
   check_untangled_from_carried_start();
+  check_relaxed_locked_ball();
 
   const Mesh_file mesh = make_kuhn_cavities(2, 4, 2, 150);
   MI::Untangling_input<3> in = tetrahedral_problem(mesh);

@@ -22,7 +22,9 @@
 // whereas the blended twists turn it evenly along its length (a valid map),
 // and bend it along its arc.  A blend of the rotations and of the centres
 // bent it along the chord instead: bar-200k-bend's carried map then had
-// inverted elements on the inner side.
+// inverted elements on the inner side.  Real shapes are not bars: where
+// the blend inverts elements, the continuation relaxes it
+// (rigid_relaxation.h).
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_CARRIED_MOTION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_CARRIED_MOTION_H
 

@@ -22,6 +22,7 @@
 
 #include <CGAL/Mesh_untangling/internal/carried_motion.h>
 #include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
+#include <CGAL/Mesh_untangling/internal/rigid_relaxation.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
 
 #include <algorithm>
@@ -172,7 +173,7 @@ public:
   Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
                const std::vector<Vector>& rest)
     : start_(std::chrono::steady_clock::now()), in_(in), options_(options), protection_(protection),
-      given_(in.positions), path_(in, rest, given_), carried_(in, rest, path_),
+      given_(in.positions), path_(in, rest, given_), carried_(in, rest, path_), relaxation_(in, rest),
       build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
   {}
 
@@ -204,13 +205,22 @@ public:
     return r;
   }
 
-  /// `from` (at `from_motion`) with the free vertices carried along by the
-  /// rigid groups of fixed vertices to `to_motion`; none when no group carries them.
-  std::optional<std::vector<Vector>> carried(const std::vector<Vector>& from, double from_motion, double to_motion) const
+  /// `from` (at `from_motion`) carried to `to_motion`: the fixed vertices
+  /// on their path, the free ones moved by the blend of the rigid groups'
+  /// motions (carried_motion.h); where the blend leaves inverted elements,
+  /// or no group carries them, the map is relaxed as rigidly as possible
+  /// from there (rigid_relaxation.h).
+  std::vector<Vector> carried(const std::vector<Vector>& from, double from_motion, double to_motion)
   {
-    if(!carried_.carries()) return std::nullopt;
-    return carried_.carry(from, from_motion, to_motion, in_.is_fixed);
+    std::vector<Vector> x = carried_.carry(from, from_motion, to_motion, in_.is_fixed);
+    for(std::size_t v = 0; v < given_.size(); ++v)
+      if(in_.is_fixed[v]) x[v] = path_.position(v, to_motion);
+    if(!carried_.carries() || relaxation_.inverted_elements(x, in_.elements) > 0) relaxation_.relax(x);
+    return x;
   }
+
+  /// How many elements of `x` (a map of the mesh) are inverted against the rest.
+  std::size_t inverted_elements(const std::vector<Vector>& x) const { return relaxation_.inverted_elements(x, in_.elements); }
 
   bool has_budget() const { return !out_of_time(options_) && eps_steps_left() > 0; }
   bool stop_requested() const { return stop_requested_; }
@@ -278,6 +288,7 @@ private:
   const std::vector<Vector> given_;
   const Fixed_vertex_motion<d> path_;
   const Carried_motion<d> carried_;
+  Rigid_relaxation<d> relaxation_;
   const bool build_phantoms_;
   Untangling_result work_;   // what the steps cost, all together
   bool stop_requested_ = false;
@@ -327,16 +338,15 @@ Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untang
     // steps from the last map got stuck at 164°.  (Either start alone
     // leaves the cavities tangled.)
     // The first step has no two maps to extrapolate from: its free vertices
-    // start carried along by the rigid groups of fixed vertices (carried_motion.h).
+    // start carried along by the rigid groups of fixed vertices
+    // (carried_motion.h), relaxed as rigidly as possible where that inverts
+    // elements (rigid_relaxation.h).
     const auto prediction = reached > previous_reached
-                              ? std::optional(extrapolated_map<d>(previous, previous_reached, valid, reached, motion))
+                              ? extrapolated_map<d>(previous, previous_reached, valid, reached, motion)
                               : c.carried(valid, reached, motion);
-    bool predicted = false;
-    if(prediction) {
-      last = c.try_predicted_step(*prediction, motion);
-      if(last.status == Untangling_status::INVALID_INPUT) return last;
-      predicted = reached_goal(last.status);
-    }
+    last = c.try_predicted_step(prediction, motion);
+    if(last.status == Untangling_status::INVALID_INPUT) return last;
+    const bool predicted = reached_goal(last.status);
     if(!predicted && c.has_budget() && !c.stop_requested()) last = c.try_step(valid, motion);
     if(last.status == Untangling_status::INVALID_INPUT) return last;
     if(reached_goal(last.status)) {

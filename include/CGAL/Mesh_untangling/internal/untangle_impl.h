@@ -146,15 +146,17 @@ bool fixed_vertices_move_beyond_an_edge(const Untangling_input<d>& in,
   return false;
 }
 
-/// The untangling from the map where the rigid groups of fixed vertices
-/// carry the free vertices all the way (carried_motion.h), when they move
-/// beyond an edge and that map has no inverted element, without phantoms:
-/// one continuation step of the whole motion.  A bar twisted by 180° or
-/// bent by 90° is locally invertible there already; their direct
-/// untangling took most of the 17-35 s of the 50k-tet bars.  None when it
-/// does not apply; otherwise its result, with `in` at the result's map when
-/// the result is final (it reached the goal, or left no room for a
-/// fallback) and at the given map otherwise.
+/// The untangling from the carried map (continuation.h: the free vertices
+/// carried along by the rigid groups of fixed vertices, then relaxed as
+/// rigidly as possible), when the fixed vertices move beyond an edge,
+/// without phantoms: one continuation step of the whole motion.  A bar
+/// twisted by 180° or bent by 90° is locally invertible there already; a
+/// real shape held by both ends, one turned by 90-120°, or with a third
+/// locked at a twist, is left with a few inverted elements, which the
+/// solver untangles in a few eps steps (the TetGen armadillo of 59k tets:
+/// 2.9 s; its direct untangling was still tangled after 40 s, and so was
+/// the continuation after it).  None when it does not apply; otherwise its
+/// result, with `in` at its map.
 template <int d>
 std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>& in, const Untangling_options& options,
                                                              const Protection_request<d>& protection,
@@ -164,15 +166,41 @@ std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>
   Untangling_options budget = options;   // (as much work as a direct run)
   budget.max_energy_evaluations = direct_run_evaluations(in.elements.size());
   Continuation_steps<d> steps(in, budget, protection, rest);
-  const auto start = steps.carried(rest, 0, 1);
-  if(!start || input_figures<d>(steps.step_input(*start, 1), options).inverted_before > 0) return std::nullopt;
   const Untangling_result given = input_figures<d>(in, options);
-  Untangling_result r = steps.try_predicted_step(*start, 1);
+  Untangling_result r = steps.try_predicted_step(steps.carried(rest, 0, 1), 1);
   r.inverted_before = given.inverted_before;
   r.min_scaled_det_before = given.min_scaled_det_before;
   r.continuation_steps = reached_goal(r.status) ? 1 : 0;
-  if(!leaves_room_for_a_fallback(r, options)) in.positions = steps.map();
+  in.positions = steps.map();
   return r;
+}
+
+/// After `first`, a run from the given map `given` that failed and left
+/// `in` at its map (`first_phantoms`: its phantoms), the continuation from
+/// `rest` with what is left of the budget; the result with fewer defects
+/// is kept, with the work of both.
+template <int d>
+Untangling_result then_by_continuation(Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
+                                       Untangling_result first, Phantom_elements<d> first_phantoms,
+                                       const Untangling_options& options, const Protection_request<d>& protection,
+                                       const std::vector<Eigen::Matrix<double, d, 1>>& rest,
+                                       Phantom_elements<d>* phantoms_used)
+{
+  const auto first_map = in.positions;
+  in.positions = given;
+  Phantom_elements<d> continued_phantoms;
+  Untangling_result continued = untangle_by_continuation<d>(in, what_is_left_after(first, options), protection, rest,
+                                                            first, &continued_phantoms);
+  if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
+    in.positions = first_map;   // the first result was the better one
+    add_work(first, continued);
+    first.continuation_steps = continued.continuation_steps;
+    if(phantoms_used) *phantoms_used = std::move(first_phantoms);
+    return first;
+  }
+  add_work(continued, first);
+  if(phantoms_used) *phantoms_used = std::move(continued_phantoms);
+  return continued;
 }
 
 template <int d>
@@ -198,15 +226,20 @@ Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_op
   if(!automatic)
     return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
   if constexpr(d == 3) {
+    // Where the carried start fails, the continuation follows at once: a
+    // direct run from the given map is a bigger jump still.  Two Kuhn
+    // cavities turned 150°: the carried start ends with every element
+    // positive but stars covered twice (no phantom), the direct run then
+    // was still tangled after 17.7 s, and the continuation untangled the
+    // problem in 1 s.
+    const auto given = in.positions;
     if(std::optional<Untangling_result> carried = untangle_from_carried_start<d>(in, options, protection, *rest)) {
       if(!leaves_room_for_a_fallback(*carried, options)) {
         if(phantoms_used) *phantoms_used = Phantom_elements<d>();
         return *carried;
       }
-      Untangling_result r = untangle_directly_then_by_continuation<d>(in, what_is_left_after(*carried, options),
-                                                                      protection, *rest, phantoms_used);
-      add_work(r, *carried);
-      return r;
+      return then_by_continuation<d>(in, given, *carried, Phantom_elements<d>(), options, protection, *rest,
+                                     phantoms_used);
     }
   }
   return untangle_directly_then_by_continuation<d>(in, options, protection, *rest, phantoms_used);
@@ -248,21 +281,7 @@ Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in
     if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
     return first;
   }
-  const auto direct_map = in.positions;
-  in.positions = given;
-  Phantom_elements<d> continued_phantoms;
-  Untangling_result continued = untangle_by_continuation<d>(in, what_is_left_after(first, options), protection, rest,
-                                                            first, &continued_phantoms);
-  if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
-    in.positions = direct_map;   // the direct result was the better one
-    add_work(first, continued);
-    first.continuation_steps = continued.continuation_steps;
-    if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
-    return first;
-  }
-  add_work(continued, first);
-  if(phantoms_used) *phantoms_used = std::move(continued_phantoms);
-  return continued;
+  return then_by_continuation<d>(in, given, first, std::move(direct_phantoms), options, protection, rest, phantoms_used);
 }
 
 /// Puts the input map `given` back into `in` when it has fewer defects than
