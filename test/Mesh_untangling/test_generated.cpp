@@ -81,11 +81,11 @@ void check_scaling()
   }
 }
 
-/// The hand-over runs LBFGSpp's iteration with its vector algebra in
-/// chunks (Chunked_LBFGS): on this grid it makes the same eps steps, inner
-/// iterations and evaluations as the reference LBFGSpp, though not the same
-/// bits (the dot products are summed by chunks), and the same bits with 1
-/// and 2 threads.
+/// The hand-over runs its own L-BFGS (Chunked_LBFGS: the algebra in chunks,
+/// the curvature pairs carried from one eps step to the next, a safeguarded
+/// line search): on this grid it needs fewer evaluations than the reference
+/// LBFGSpp (27 against 101 when written), gives other bits, and the same
+/// bits with 1 and 2 threads.
 void check_hand_over_algebra(const Mesh_file& tangled)
 {
   std::vector<bool> fixed(tangled.map.size(), false);
@@ -110,16 +110,19 @@ void check_hand_over_algebra(const Mesh_file& tangled)
             << ", " << one.inner_iterations << ", " << one.energy_evaluations << "\n";
   CHECK(one.is_locally_invertible() && two.is_locally_invertible());
   CHECK_MESSAGE(one.solver.rfind("lbfgs (", 0) == 0, one.solver);
-  CHECK(one.outer_iterations == reference.outer_iterations && one.inner_iterations == reference.inner_iterations &&
-        one.energy_evaluations == reference.energy_evaluations);
+  CHECK_MESSAGE(one.energy_evaluations < reference.energy_evaluations,
+                "the hand-over took more evaluations than the published scheme");
+  CHECK(one.outer_iterations == two.outer_iterations && one.inner_iterations == two.inner_iterations &&
+        one.energy_evaluations == two.energy_evaluations);
   CHECK_MESSAGE(one_map == two_map, "the hand-over's result depends on the number of threads");
   CHECK_MESSAGE(one_map != reference_map, "the hand-over gave LBFGSpp's bits: did it run LBFGSpp?");
 }
 
-/// Solver::AUTOMATIC tries the published scheme first on a 100 x 100 grid:
-/// a factorization costs about 4,900 flops per triangle there, dear but
-/// under the hand-over's 1e9 in all.  The trial settles, with the eps steps
-/// and evaluations of the published scheme itself.
+/// Solver::AUTOMATIC tries L-BFGS first on a 100 x 100 grid: a
+/// factorization costs about 4,900 flops per triangle there, dear but under
+/// the hand-over's 1e9 in all.  The trial settles locally invertible, with
+/// fewer evaluations than the published scheme (36 against 107 when written:
+/// the hand-over's L-BFGS, see check_hand_over_algebra).
 void check_published_trial()
 {
   Mesh_file square = make_square_grid(100);
@@ -138,8 +141,8 @@ void check_published_trial()
             << published.energy_evaluations << "\n";
   CHECK_MESSAGE(automatic.solver.rfind("lbfgs (tried first: ", 0) == 0, automatic.solver);
   CHECK(automatic.is_locally_invertible() && published.is_locally_invertible());
-  CHECK(automatic.outer_iterations == published.outer_iterations &&
-        automatic.energy_evaluations == published.energy_evaluations);
+  CHECK_MESSAGE(automatic.energy_evaluations < published.energy_evaluations,
+                "the trial took more evaluations than the published scheme");
 }
 
 int main()

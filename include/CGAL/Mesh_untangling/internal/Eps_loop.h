@@ -125,7 +125,9 @@ public:
   bool out_of_time() const { return internal::out_of_time(options_); }
 
   /// Whether Solver::AUTOMATIC, about to run Newton on P, tries the
-  /// published scheme first (see lbfgs_trial_above_flops_per_element).
+  /// published scheme first (see lbfgs_trial_above_flops_per_element), with
+  /// the hand-over's L-BFGS (Chunked_LBFGS: the published eps schedule and
+  /// stopping rules, fewer evaluations).
   bool tries_lbfgs_first(const Untangling_problem<d>& P)
   {
     if(options_.solver != Solver::AUTOMATIC || P.elements.empty()) return false;
@@ -188,6 +190,7 @@ public:
     const bool must_halve = stall == Stall_test::COUNT_NOT_HALVED && newton != nullptr;
     std::vector<std::size_t> counts;   // of non-positive elements after each step
     std::size_t idle_steps = 0;        // in a row, without an inner iteration
+    Chunked_LBFGS curvature;           // (carried from one eps step to the next: see Chunked_LBFGS)
     while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
@@ -200,7 +203,7 @@ public:
       if(P.links.has_parents()) P.links.hold_parameters = !(valid && eps <= free_parameters_epsilon);
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? polish_tolerance_ : 1e-4)
-               : LBFGS_solver<d>(lbfgs_algebra()).minimize(P, eps, theta_, inner_iterations(valid),
+               : lbfgs_solver(curvature).minimize(P, eps, theta_, inner_iterations(valid),
                                                            [this] { return out_of_time() || trial_spent() || budget_spent(); });
       const double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
@@ -345,10 +348,11 @@ private:
 
   /// The reference keeps LBFGSpp as it is; Solver::AUTOMATIC's hand-over
   /// (large grids, a million unknowns) runs the same iteration with its
-  /// vector algebra in chunks, in parallel.
-  LBFGS_algebra lbfgs_algebra() const
+  /// vector algebra in chunks, in parallel, and its curvature pairs carried
+  /// through the run's eps steps in `curvature`.
+  LBFGS_solver<d> lbfgs_solver(Chunked_LBFGS& curvature) const
   {
-    return options_.solver == Solver::AUTOMATIC ? LBFGS_algebra::CHUNKED : LBFGS_algebra::LBFGSPP;
+    return options_.solver == Solver::AUTOMATIC ? LBFGS_solver<d>(curvature) : LBFGS_solver<d>(LBFGS_algebra::LBFGSPP);
   }
 
   /// Inner iterations per eps step: the caller's, else the published

@@ -70,6 +70,10 @@ class LBFGS_solver
 public:
   explicit LBFGS_solver(LBFGS_algebra algebra = LBFGS_algebra::LBFGSPP) : algebra_(algebra) {}
 
+  /// LBFGS_algebra::CHUNKED, its curvature pairs carried from one inner
+  /// solve to the next in `carried` (see Chunked_LBFGS).
+  explicit LBFGS_solver(Chunked_LBFGS& carried) : algebra_(LBFGS_algebra::CHUNKED), carried_(&carried) {}
+
   /// Partially minimizes F(., eps) from P.x; P.x receives the result.
   /// `out_of_time` is asked before every evaluation: one inner solve of the
   /// published scheme may make 3,000 to 30,000 iterations (over 30 s on the
@@ -110,7 +114,8 @@ public:
     double fx = 0;
     try {
       if(algebra_ == LBFGS_algebra::CHUNKED) {
-        stats.iterations = static_cast<std::size_t>(Chunked_LBFGS(param).minimize(F, x, fx));
+        Chunked_LBFGS fresh;
+        stats.iterations = static_cast<std::size_t>((carried_ ? *carried_ : fresh).minimize(F, x, fx, param));
       } else {
         LBFGSpp::LBFGSSolver<double, LBFGSpp::LineSearchNocedalWright> solver(param);
         stats.iterations = static_cast<std::size_t>(solver.minimize(F, x, fx));
@@ -132,6 +137,7 @@ public:
 
 private:
   LBFGS_algebra algebra_;
+  Chunked_LBFGS* carried_ = nullptr;
 };
 
 } // namespace internal
