@@ -53,31 +53,21 @@ public:
 
   /// The mesh elements of `in` (phantoms are not the mesh's) and which
   /// vertices are fixed; `rest` the positions each element is rigid in.
-  /// Nothing is solved or preconditioned before the first relax().
+  /// Only the rest's orientations are taken here: the per-element data of
+  /// the relaxation (about 200 bytes a tetrahedron) is made by the first
+  /// relax(), which most runs never call.  `in` and `rest` must outlive
+  /// this object.
   Rigid_relaxation(const Untangling_input<d>& in, const std::vector<Vector>& rest)
+    : mesh_(in.elements), rest_(rest)
   {
     const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
     row_.assign(n, none);
     for(std::size_t v = 0; v < n; ++v)
       if(!(v < in.is_fixed.size() && in.is_fixed[v])) row_[v] = free_vertices_++;
+    orientation_.resize(m);
     for(std::size_t k = 0; k < m; ++k) {
-      Matrix edges;
-      for(int i = 0; i < d; ++i) edges.col(i) = rest[in.elements[k][i + 1]] - rest[in.elements[k][0]];
-      const double det = edges.determinant();
-      const Matrix inverse = edges.inverse();
-      orientation_.push_back(det > 0 ? 1 : det < 0 ? -1 : 0);
-      // (a flat rest element has no rotation to keep)
-      if(!(det != 0) || !inverse.allFinite()) continue;
-      Element e;
-      e.vertices = in.elements[k];
-      e.volume = std::abs(det);
-      e.gradients[0] = Vector::Zero();
-      for(int i = 0; i < d; ++i) {
-        e.gradients[i + 1] = inverse.row(i).transpose();
-        e.gradients[0] -= e.gradients[i + 1];
-      }
-      e.rest_edges_inverse = inverse;
-      elements_.push_back(e);
+      const double det = rest_edges(k).determinant();
+      orientation_[k] = det > 0 ? 1 : det < 0 ? -1 : 0;
     }
   }
 
@@ -104,7 +94,7 @@ public:
   /// finite round when the stiffness cannot be preconditioned or a solve fails.
   void relax(std::vector<Vector>& x, std::size_t iterations = default_iterations)
   {
-    if(free_vertices_ == 0 || elements_.empty() || !prepared()) return;
+    if(free_vertices_ == 0 || !prepared() || elements_.empty()) return;
     std::vector<Matrix> rotation(elements_.size());
     const Eigen::Index rows = Eigen::Index(free_vertices_);
     for(std::size_t round = 0; round < iterations; ++round) {
@@ -162,10 +152,39 @@ private:
     return u * svd.matrixV().transpose();
   }
 
-  /// Preconditions the stiffness once; false when it cannot be.
+  Matrix rest_edges(std::size_t k) const
+  {
+    Matrix edges;
+    for(int i = 0; i < d; ++i) edges.col(i) = rest_[mesh_[k][i + 1]] - rest_[mesh_[k][0]];
+    return edges;
+  }
+
+  /// The mesh elements with a rest volume, their barycentric gradients.
+  void make_elements()
+  {
+    for(std::size_t k = 0; k < orientation_.size(); ++k) {
+      const Matrix edges = rest_edges(k);
+      const Matrix inverse = edges.inverse();
+      // (a flat rest element has no rotation to keep)
+      if(orientation_[k] == 0 || !inverse.allFinite()) continue;
+      Element e;
+      e.vertices = mesh_[k];
+      e.volume = std::abs(edges.determinant());
+      e.gradients[0] = Vector::Zero();
+      for(int i = 0; i < d; ++i) {
+        e.gradients[i + 1] = inverse.row(i).transpose();
+        e.gradients[0] -= e.gradients[i + 1];
+      }
+      e.rest_edges_inverse = inverse;
+      elements_.push_back(e);
+    }
+  }
+
+  /// Makes the elements and preconditions the stiffness, once; false when it cannot be.
   bool prepared()
   {
     if(solver_) return solver_->info() == Eigen::Success;
+    make_elements();
     std::vector<Eigen::Triplet<double>> entries;
     double diagonal = 0;
     for(const Element& e : elements_)
@@ -191,6 +210,8 @@ private:
     return solver_->info() == Eigen::Success && regularization_ > 0 && std::isfinite(regularization_);
   }
 
+  const std::vector<std::array<std::size_t, d + 1>>& mesh_;
+  const std::vector<Vector>& rest_;
   std::vector<std::size_t> row_;   // per mesh vertex: its row among the free ones, or none
   std::size_t free_vertices_ = 0;
   std::vector<Element> elements_;  // the mesh elements with a rest volume
