@@ -120,6 +120,7 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
   const Untangling_result result =
     run_with_concurrency<ConcurrencyTag>([&] { return untangle<d>(input, options, protection, &phantoms, &added); });
   if(result.status == Untangling_status::INVALID_INPUT) return result;
+  CGAL_MESH_UNTANGLING_STAGE("library: untangle returned");
   write_back(input);
   if constexpr(wants_added)
     std::copy(added.begin(), added.end(), get_parameter(np, internal_np::mesh_untangling_added_vertices_output));
@@ -133,6 +134,7 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
     auto out = get_parameter(np, internal_np::mesh_untangling_element_figures_output);
     for(const Element_figures& f : element_figures<d>(std::move(given), input, phantoms, options.scaling)) *out++ = f;
   }
+  CGAL_MESH_UNTANGLING_STAGE("library: outputs");
   return result;
 }
 

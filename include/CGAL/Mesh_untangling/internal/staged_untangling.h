@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/boundary_protection.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
+#include <CGAL/Mesh_untangling/internal/stage_trace.h>
 
 #include <random>
 #include <stdexcept>
@@ -177,17 +178,20 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
     result.message = e.what();
     return result;
   }
+  CGAL_MESH_UNTANGLING_STAGE("direct: protect + make problem");
   result.number_of_fixed_vertices = P.number_of_fixed_vertices;
   result.degenerate_targets_replaced = P.degenerate_targets_replaced;
   const Invertibility_report before = check_mesh_elements<d>(in, P.reference_orientation);
   result.inverted_before = before.inverted_elements;
   result.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
 
+  CGAL_MESH_UNTANGLING_STAGE("direct: figures before");
   const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
   Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
   const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
   Eps_loop_outcome outcome = run_stage_0(P, in, loop, regular_targets_follow, options.stage_0_never_stalls);
   if(outcome.stalled && !options.give_up_on_stall) outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome);
+  CGAL_MESH_UNTANGLING_STAGE("direct: eps loop");
   auto summary = determinant_summary(P, P.x.data());
   if(loop.restore_least_tangled(P, summary.non_positive)) {
     outcome.energy = energy<d>(P, P.x.data(), outcome.epsilon, theta);
@@ -198,6 +202,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   result.min_scaled_det_after = summary.min_det;
   measure_quality(P, result);
 
+  CGAL_MESH_UNTANGLING_STAGE("direct: quality");
   hand_back_free_vertices(P, in);
 
   const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
@@ -207,6 +212,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
     phantoms_used->targets.assign(in.targets.begin() + m, in.targets.end());
     phantoms_used->extra_vertices.assign(in.positions.begin() + n, in.positions.end());
   }
+  CGAL_MESH_UNTANGLING_STAGE("direct: verdict");
   remove_phantom_elements<d>(in);
   record_verdict(report, result);
   result.seconds = loop.seconds();
