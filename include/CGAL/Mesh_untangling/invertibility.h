@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -127,6 +128,47 @@ Invertibility_report check_local_invertibility(const std::vector<std::array<doub
   });
   return report;
 }
+
+namespace internal {
+
+/// The vertex stars (and, 3D, edge fans) of `simplices` that are not disks
+/// or half-disks under `reference_orientation`, as check_local_invertibility()
+/// lists them (non_manifold, non_manifold_vertex_ids, non_manifold_edges),
+/// without a map: no angle is measured, so it costs the visit of the stars
+/// alone (on a cube of a million tetrahedra, a third of the whole check).
+template <std::size_t D>
+Invertibility_report non_manifold_stars(std::size_t number_of_vertices,
+                                        const std::vector<std::array<std::size_t, D + 1>>& simplices,
+                                        const std::vector<int>& reference_orientation)
+{
+  using Point = std::conditional_t<D == 2, Vec2, Vec3>;
+  const std::vector<Point> no_positions;
+  const std::vector<signed char> no_signs;
+  const Vertex_stars stars = build_vertex_stars(number_of_vertices, simplices);
+  Invertibility_report report;
+  const std::vector<char> no_fixed;
+  if constexpr(D == 3)
+    check_vertex_chunks(number_of_vertices, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+      Defect_recorder record(part, no_fixed);
+      visit_edge_fans_3<false>(no_positions, simplices, reference_orientation, no_signs, stars, first, last,
+        [&](std::size_t a, std::size_t b, Star_type type, double, const auto&) {
+          if(type == Star_type::NON_MANIFOLD) record.non_manifold_edge(a, b);
+        });
+    });
+  check_vertex_chunks(number_of_vertices, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+    Defect_recorder record(part, no_fixed);
+    const auto check_vertex = [&](std::size_t v, Star_type type, double, const auto&) {
+      if(type == Star_type::NON_MANIFOLD) record.non_manifold_vertex(v);
+    };
+    if constexpr(D == 2)
+      visit_vertex_stars_2<false>(no_positions, simplices, reference_orientation, no_signs, stars, first, last, check_vertex);
+    else
+      visit_vertex_stars_3<false>(no_positions, simplices, reference_orientation, no_signs, stars, first, last, check_vertex);
+  });
+  return report;
+}
+
+} // namespace internal
 
 /// \ingroup PkgMeshUntanglingRef
 /// Per vertex, the sum of its signed corner angles over 2π: the number of

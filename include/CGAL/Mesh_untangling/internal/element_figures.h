@@ -37,23 +37,26 @@ std::vector<Element_figures> element_figures(Untangling_input<d> given, const Un
   scaling = resolved_target_scaling<d>(given, scaling);
   given.is_fixed.clear();
   given.free_boundary_vertex.reset();
-  const Untangling_problem<d> P = make_untangling_problem<d>(given, scaling);
+  const Untangling_problem<d> P =
+    make_untangling_problem<d>(given, scaling, default_degenerate_quality, Element_order::AS_GIVEN);
 
   std::vector<Eigen::Matrix<double, d, 1>> x(result.positions.begin(),
                                              result.positions.begin() + result.number_of_mesh_vertices());
   x.insert(x.end(), phantoms.extra_vertices.begin(), phantoms.extra_vertices.end());
   std::vector<Element_figures> figures(P.elements.size());
-  for(std::size_t i = 0; i < P.elements.size(); ++i) {
-    const std::size_t k = P.input_index[i];
-    auto s = given.elements[k];
-    if(P.reference_orientation[k] < 0) std::swap(s[0], s[1]);
-    Matrix edges;
-    for(int j = 0; j < d; ++j)
-      for(int c = 0; c < d; ++c) edges(c, j) = x[s[j + 1]][c] - x[s[0]][c];
-    // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
-    const Matrix inverse_target = P.gradient_operators[i].template bottomRows<d>() / P.scale;
-    figures[k] = figures_of_jacobian<d>(Matrix(edges * inverse_target), P.reference_orientation[k]);
-  }
+  for_each_chunk(P.elements.size(), element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i) {
+      const std::size_t k = P.input_index[i];
+      auto s = given.elements[k];
+      if(P.reference_orientation[k] < 0) std::swap(s[0], s[1]);
+      Matrix edges;
+      for(int j = 0; j < d; ++j)
+        for(int c = 0; c < d; ++c) edges(c, j) = x[s[j + 1]][c] - x[s[0]][c];
+      // G's last d rows invert the normalized target's edges; P.scale brings them to the map's units
+      const Matrix inverse_target = P.gradient_operators[i].template bottomRows<d>() / P.scale;
+      figures[k] = figures_of_jacobian<d>(Matrix(edges * inverse_target), P.reference_orientation[k]);
+    }
+  });
   return figures;
 }
 

@@ -152,7 +152,7 @@ template <int d>
 bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, Untangling_result& work)
 {
   if(in.phantom_elements > 0 || in.targets.empty()) return false;
-  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
   const std::vector<std::size_t> blockers = non_positive_elements<d>(in, P.reference_orientation);
   if(blockers.empty() || blockers.size() > local_repair_most_inverted) return false;
   std::vector<char> region(in.number_of_mesh_elements(), 0);

@@ -16,6 +16,7 @@
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
+#include <CGAL/Mesh_untangling/internal/stage_trace.h>
 #include <CGAL/Mesh_untangling/internal/tutte_start.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 
@@ -38,7 +39,7 @@ template <int d>
 Untangling_result input_figures(const Untangling_input<d>& in, const Untangling_options& options)
 {
   Untangling_result figures;
-  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
   figures.inverted_before = check_mesh_elements<d>(in, P.reference_orientation).inverted_elements;
   figures.min_scaled_det_before = determinant_summary(P, P.x.data()).min_det;
   return figures;
@@ -82,7 +83,7 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
     // (nor that of a cut surface: its seams would come apart)
     if(nothing_fixed && in.phantom_elements == 0 && !in.has_cells() && !in.has_links() &&
        leaves_room_for_a_fallback(first, options)) {
-      const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+      const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
       start = tutte_start(in, P.reference_orientation);
     }
     if(!start) {
@@ -337,7 +338,11 @@ void validate_stars(const Untangling_input<d>& in)
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
   if(in.has_cells() || in.has_links()) return;   // (a seamless surface's stars: checked where its links are made)
-  const Invertibility_report report = check_mesh<d>(in, orientation);
+  // (the stars' combinatorics only: the map is checked after the run)
+  const std::size_t m = in.number_of_mesh_elements();
+  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + m);
+  const Invertibility_report report = non_manifold_stars<d>(in.number_of_mesh_vertices(), mesh,
+                                                            std::vector<int>(orientation.begin(), orientation.begin() + m));
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
                                 " is not a disk or a half-disk (its elements meet there only at the vertex, or "
@@ -409,8 +414,11 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     if(in.has_links() && options.refinement)
       throw std::invalid_argument("refinement is not offered for seamless parameterizations (its new vertices "
                                   "would need wedges of their own)");
+    CGAL_MESH_UNTANGLING_STAGE("untangle: start");
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
+    CGAL_MESH_UNTANGLING_STAGE("validate_input");
     validate_stars<d>(in);
+    CGAL_MESH_UNTANGLING_STAGE("validate_stars");
     if(in.has_cells() && requested.supplied)
       throw std::invalid_argument("phantom elements protect vertex stars of simplices, not the corners of cells");
     if(in.has_links() && requested.supplied)
@@ -437,8 +445,10 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   try {
     const Untangling_options metered = with_progress(timed, progress);
     r = untangle_as_asked<d>(in, metered, protection, phantoms_used);
+    CGAL_MESH_UNTANGLING_STAGE("untangle_as_asked");
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
     repair_locally_after<d>(in, given, metered, r);
+    CGAL_MESH_UNTANGLING_STAGE("repair_locally_after");
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
     if(options.refinement && !protection.supplied) {
       const auto rerun = [&](Untangling_input<d>& refined, const Untangling_options& o) {
@@ -469,6 +479,7 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   if(!reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT)
     keep_the_input_if_better<d>(in, given, options, r, phantoms_used);
   if(r.status != Untangling_status::SUCCESS && r.message.empty()) r.message = what_is_left(r);
+  CGAL_MESH_UNTANGLING_STAGE("keep_the_input_if_better");
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();   // (between the runs too)
   progress.finish();
   return r;

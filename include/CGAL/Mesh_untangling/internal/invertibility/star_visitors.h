@@ -48,8 +48,10 @@ void visit_vertex_stars(const Vertex_stars& stars, std::size_t first, std::size_
 }
 
 /// Calls `visit(v, type, signed_angle_sum, star_elements)` for every
-/// non-isolated 2D vertex v in [first, last).
-template <class Visitor>
+/// non-isolated 2D vertex v in [first, last).  Without `with_angles` the
+/// sum is 0 and neither `positions` nor `signs` is read: the type of a star
+/// is a matter of its combinatorics and the targets' orientations alone.
+template <bool with_angles = true, class Visitor>
 void visit_vertex_stars_2(const std::vector<Vec2>& positions,
                           const std::vector<std::array<std::size_t, 3>>& triangles,
                           const std::vector<int>& reference_orientation,
@@ -64,14 +66,15 @@ void visit_vertex_stars_2(const std::vector<Vec2>& positions,
     std::size_t a = t[(i + 1) % 3], b = t[(i + 2) % 3];
     if(reference_sign(reference_orientation, e) < 0)
       std::swap(a, b);
-    return std::make_pair(Link_edge{a, b}, signs[e] * corner_angle(positions[v], positions[a], positions[b]));
+    if constexpr(!with_angles) return std::make_pair(Link_edge{a, b}, 0.);
+    else return std::make_pair(Link_edge{a, b}, signs[e] * corner_angle(positions[v], positions[a], positions[b]));
   };
   visit_vertex_stars<Chain_classifier, Link_edge>(stars, first, last, corner, visit);
 }
 
 /// Calls `visit(v, type, signed_solid_angle_sum, star_elements)` for every
-/// non-isolated 3D vertex v in [first, last).
-template <class Visitor>
+/// non-isolated 3D vertex v in [first, last) (`with_angles`: as in 2D).
+template <bool with_angles = true, class Visitor>
 void visit_vertex_stars_3(const std::vector<Vec3>& positions,
                           const std::vector<std::array<std::size_t, 4>>& tets,
                           const std::vector<int>& reference_orientation,
@@ -87,8 +90,9 @@ void visit_vertex_stars_3(const std::vector<Vec3>& positions,
     std::array<std::size_t, 3> face = {t[perm[1]], t[perm[2]], t[perm[3]]};
     if(reference_sign(reference_orientation, e) < 0)
       std::swap(face[1], face[2]);
-    return std::make_pair(face, signs[e] * solid_angle(positions[v], positions[face[0]], positions[face[1]],
-                                                       positions[face[2]]));
+    if constexpr(!with_angles) return std::make_pair(face, 0.);
+    else return std::make_pair(face, signs[e] * solid_angle(positions[v], positions[face[0]], positions[face[1]],
+                                                            positions[face[2]]));
   };
   visit_vertex_stars<Surface_classifier, std::array<std::size_t, 3>>(stars, first, last, corner, visit);
 }
@@ -103,8 +107,9 @@ struct Fan_entry
 
 /// Calls `visit(a, b, type, signed_dihedral_sum, fan_elements)` for every 3D
 /// edge (a < b) with a in [first, last).  Each edge is gathered from the star
-/// of its smaller vertex, so no global edge table is needed.
-template <class Visitor>
+/// of its smaller vertex, so no global edge table is needed.  (`with_angles`:
+/// as for vertex stars.)
+template <bool with_angles = true, class Visitor>
 void visit_edge_fans_3(const std::vector<Vec3>& positions,
                        const std::vector<std::array<std::size_t, 4>>& tets,
                        const std::vector<int>& reference_orientation,
@@ -130,8 +135,10 @@ void visit_edge_fans_3(const std::vector<Vec3>& positions,
         Link_edge l{t[perm[2]], t[perm[3]]};
         if(reference_sign(reference_orientation, e) < 0)
           std::swap(l.from, l.to);
-        const double angle = dihedral_angle(positions[a], positions[t[j]], positions[l.from], positions[l.to]);
-        entries.push_back({t[j], l, e, signs[e] * angle});
+        double angle = 0;
+        if constexpr(with_angles)
+          angle = signs[e] * dihedral_angle(positions[a], positions[t[j]], positions[l.from], positions[l.to]);
+        entries.push_back({t[j], l, e, angle});
       }
     }
     std::sort(entries.begin(), entries.end(),

@@ -166,7 +166,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
   const std::set<Edge> boundary = boundary_edges<d>(trial);
   bool repaired = false;
   for(int level = 0; !repaired && level <= last_refinement_level && !out_of_budget(); ++level) {
-    const Untangling_problem<d> P = make_untangling_problem<d>(trial, options.scaling);
+    const Untangling_problem<d> P = make_untangling_problem<d>(trial, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
     const std::vector<std::size_t> blockers = non_positive_elements<d>(trial, P.reference_orientation);
     if(blockers.empty() || blockers.size() > local_repair_most_inverted) break;
     const std::vector<Edge> edges = edges_to_split<d>(trial, blockers, level, boundary);
@@ -193,7 +193,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     std::vector<Eigen::Matrix<double, d, 1>> fewer_given;
     std::vector<Added_vertex> fewer_splits;
     if(!refine_without<d>(in, given, splits, i, trial.positions, fewer, fewer_given, fewer_splits)) continue;
-    const Untangling_problem<d> P = make_untangling_problem<d>(fewer, options.scaling);
+    const Untangling_problem<d> P = make_untangling_problem<d>(fewer, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
     if(!non_positive_elements<d>(fewer, P.reference_orientation).empty() &&
        !repair_locally<d>(fewer, within_budget(), work))
       continue;
