@@ -24,6 +24,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
+#include <csignal>
+#include <signal.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,6 +64,54 @@ struct Arguments
 /// but not locally invertible: elements (or stars) with only fixed vertices
 /// are inverted, and nothing can repair them.
 constexpr int exit_unrepairable = 3;
+
+/// The signal (SIGINT, SIGTERM) that asked the run to stop, 0 while none did.
+volatile std::sig_atomic_t interrupting_signal = 0;
+
+/// During the untangling, the first SIGINT or SIGTERM stops the run after
+/// its current eps step, and the best map so far is written with its report;
+/// a second one ends the program at once, as outside the untangling, with
+/// the temporaries removed (outputs are renamed into place only when whole).
+extern "C" void stop_after_the_eps_step(int signal)
+{
+  interrupting_signal = signal;
+  IO::internal::remove_temporaries_on_interrupt();   // (sigaction: safe in a handler)
+}
+
+/// Holds stop_after_the_eps_step() as the handler of SIGINT and SIGTERM while it lives.
+class Stop_on_signal
+{
+public:
+  Stop_on_signal()
+  {
+    struct sigaction action {};
+    action.sa_handler = stop_after_the_eps_step;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+  }
+  ~Stop_on_signal() { IO::internal::remove_temporaries_on_interrupt(); }
+  Stop_on_signal(const Stop_on_signal&) = delete;
+  Stop_on_signal& operator=(const Stop_on_signal&) = delete;
+};
+
+/// The name of an interrupting signal, for the summary and the report.
+const char* signal_name(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
+
+/// The exit code of a run whose outputs are written: 1 when a signal
+/// stopped it (whatever its map: the run did not end as it would have),
+/// else 0 when the map is locally invertible, else 3 or 1 (see exit_unrepairable).
+template <class Verdict>
+int exit_code(const Verdict& verdict)
+{
+  if(interrupting_signal != 0) {
+    std::fprintf(stderr, "untangle_mesh: interrupted by %s: the best map so far is written with its report\n",
+                 signal_name(interrupting_signal));
+    return 1;
+  }
+  if(verdict.locally_invertible) return 0;
+  return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
+}
 
 /// Bad usage or input: reported, nothing written, exit code 2.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
@@ -335,6 +385,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(element_dimension(mesh));
   j["status"] = MU::to_string(r.status);
+  j["interrupted_by"] = interrupting_signal != 0 ? nlohmann::ordered_json(signal_name(interrupting_signal)) : nullptr;
   j["locally_invertible"] = v.locally_invertible;
   j["inverted_before"] = r.inverted_before;
   j["inverted_after"] = v.inverted;
@@ -450,6 +501,7 @@ private:
 Run_options run_options(const Arguments& args, Progress_display* display)
 {
   Run_options options;
+  options.interrupted = [] { return interrupting_signal != 0; };
   options.solver = *MU::solver_from_string(args.solver);   // (CLI11 admits only the solvers' names)
   if(args.theta >= 0) options.theta = args.theta;
   options.max_iterations = args.max_iterations;
@@ -667,6 +719,7 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
   j["status"] = MU::to_string(r.status);
+  j["interrupted_by"] = interrupting_signal != 0 ? nlohmann::ordered_json(signal_name(interrupting_signal)) : nullptr;
   j["locally_invertible"] = v.locally_invertible;
   j["inverted_before"] = before.inverted;
   j["inverted_after"] = v.inverted;
@@ -732,7 +785,10 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   Run_options options = run_options(args, display.get());
   options.seam_translations =
     args.seams == "free-translations" ? MU::Seam_translations::FREE : MU::Seam_translations::KEEP;
-  run.result = untangle_mesh_file(mesh, run.fixed, options, &run.record);
+  {
+    const Stop_on_signal stop_on_signal;
+    run.result = untangle_mesh_file(mesh, run.fixed, options, &run.record);
+  }
   display.reset();
 
   write_for(args.output, [&] { IO::write_mesh_file(to.output, mesh); });
@@ -778,8 +834,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
       std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
                                                                    : run.result.message.c_str());
   }
-  if(verdict.locally_invertible) return 0;
-  return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
+  return exit_code(verdict);
 }
 
 int run(const Arguments& args)
@@ -811,13 +866,15 @@ int run(const Arguments& args)
   }
   std::unique_ptr<Progress_display> display;
   if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
-  run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, display.get()), &run.record);
+  {
+    const Stop_on_signal stop_on_signal;
+    run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, display.get()), &run.record);
+  }
   display.reset();
   run.fixed.resize(mesh.map.size(), false);   // the vertices a refinement added are free
   const Verdict verdict = write_outputs(args, mesh, run, temporaries, files);
   print_summary(args, mesh, run, verdict);
-  if(verdict.locally_invertible) return 0;
-  return verdict.no_repairable_defect && verdict.non_manifold == 0 ? exit_unrepairable : 1;
+  return exit_code(verdict);
 }
 
 // CLI11's PositiveNumber and NonNegativeNumber state their range as "0.000000
@@ -919,7 +976,9 @@ int main(int argc, char** argv)
   }
   if(args.output.empty()) args.output = default_output(args.input);
   const Thread_limit thread_limit(args.threads);
-  // No *.tmp left beside the outputs when the run is interrupted.
+  // A first SIGINT or SIGTERM stops the run after its eps step and the
+  // outputs are written; a second one, or one before the run, ends the
+  // program, and no *.tmp is left beside the outputs.
   IO::internal::remove_temporaries_on_interrupt();
   try {
     return run(args);

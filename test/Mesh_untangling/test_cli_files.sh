@@ -113,19 +113,59 @@ check "without the limit: exit 0" rc_is not_full 0
 check "without the limit: result written" grep -q '^OFF' full.off
 check "without the limit: the report is larger than the limit" [ "$(wc -c < full.json)" -gt 1024 ]
 
-# SIGTERM and SIGINT during a long run (about 9 s unhindered): the process
-# dies of the signal, no temporary is left and the older files stay.
+# SIGTERM and SIGINT during a long run (the published scheme on a cube of
+# 280k tetrahedra, many eps steps): the first stops the run after its eps
+# step, and the map so far is written, whole, with a report that says so,
+# exit 1; a second one ends the process at once (it dies of the signal), no
+# temporary is left and the older files stay.
 "$MAKE" cube 36 1.0 1 long.input > /dev/null || { echo "FAIL: make_tangled_mesh cube 36" >&2; exit 1; }
+# started NAME ARGS...: untangle_mesh in the background (pid in $pid), once
+# it has printed its first eps step (so the untangling is under way).
+started() {
+  local name=$1
+  shift
+  "$UNTANGLE" "$@" > "$name.out" 2> "$name.err" &
+  pid=$!
+  for _ in $(seq 600); do
+    grep -q '^step' "$name.err" 2> /dev/null && return 0
+    kill -0 "$pid" 2> /dev/null || return 1
+    sleep 0.1
+  done
+  return 1
+}
 for signal in TERM:143 INT:130; do
   name=${signal%:*} code=${signal#*:}
   echo "old $name" > "long-$name.vtk"
-  timeout -s "$name" --preserve-status 1.5 "$UNTANGLE" long.input -o "long-$name.vtk" --report "long-$name.json" \
-    > "sig$name.out" 2> "sig$name.err"
-  echo $? > "sig$name.rc"
-  check "SIG$name: exit $code" rc_is "sig$name" "$code"
-  check "SIG$name: old result kept" [ "$(cat "long-$name.vtk")" = "old $name" ]
-  check "SIG$name: no report" [ ! -e "long-$name.json" ]
-  check "SIG$name: no temporary left" no_temporaries
+  echo "old $name" > "long-$name.json"
+  if started "stop$name" long.input --solver lbfgs -o "long-$name.vtk" --report "long-$name.json"; then
+    kill -s "$name" "$pid"
+    wait "$pid"
+    echo $? > "stop$name.rc"
+    check "SIG$name once: exit 1" rc_is "stop$name" 1
+    check "SIG$name once: says so" err_has "stop$name" "interrupted by SIG$name: the best map so far is written"
+    check "SIG$name once: result written whole" grep -q "^CELL_TYPES 279936$" "long-$name.vtk"
+    check "SIG$name once: the report says so" grep -q "\"interrupted_by\": \"SIG$name\"" "long-$name.json"
+    check "SIG$name once: no temporary left" no_temporaries
+  else
+    check "SIG$name once: the run started its eps steps" false
+    kill "$pid" 2> /dev/null
+  fi
+  echo "old $name" > "long-$name.vtk"
+  rm -f "long-$name.json"
+  if started "kill$name" long.input --solver lbfgs -o "long-$name.vtk" --report "long-$name.json"; then
+    kill -s "$name" "$pid"
+    sleep 0.2   # (two signals sent at once may arrive as one)
+    kill -s "$name" "$pid"
+    wait "$pid"
+    echo $? > "kill$name.rc"
+    check "SIG$name twice: exit $code" rc_is "kill$name" "$code"
+    check "SIG$name twice: old result kept" [ "$(cat "long-$name.vtk")" = "old $name" ]
+    check "SIG$name twice: no report" [ ! -e "long-$name.json" ]
+    check "SIG$name twice: no temporary left" no_temporaries
+  else
+    check "SIG$name twice: the run started its eps steps" false
+    kill "$pid" 2> /dev/null
+  fi
 done
 
 # Inputs: regular files only, refused at once and by name.

@@ -112,11 +112,15 @@ auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
   return untangle(MU::parameters::rest_points(cgal_points<d>(mesh.rest)));
 }
 
-/// The solver's per-step callback from the tool's progress reporter (none without one).
+/// The solver's per-step callback from the tool's progress reporter and
+/// interruption test (none without either).
 std::function<bool(const MU::Untangling_step&)> step_callback(const Run_options& options)
 {
-  if(!options.progress) return {};
-  return [&options](const MU::Untangling_step& step) { options.progress(step); return true; };
+  if(!options.progress && !options.interrupted) return {};
+  return [&options](const MU::Untangling_step& step) {
+    if(options.progress) options.progress(step);
+    return !(options.interrupted && options.interrupted());
+  };
 }
 
 /// The named parameters every run of the tool takes from `options`, in two

@@ -43,6 +43,8 @@ struct Run_options
   CGAL::Mesh_untangling::Continuation continuation = CGAL::Mesh_untangling::Continuation::AUTOMATIC;
   std::size_t continuation_steps = CGAL::Mesh_untangling::default_continuation_steps;
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
+  /// asked after every eps step: true stops the run there, and the best map so far is its result
+  std::function<bool()> interrupted;
   /// told the fraction of the run done (Mesh_untangling::parameters::progress_callback); false cancels
   std::function<bool(double)> progress_fraction;
   /// Mesh_untangling::parameters::refinement: split interior edges when the
