@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Set-up (scripts/setup.sh), then the main job on generated samples: a
+# Set-up (scripts/setup.sh --sample: the packages, then only the tool and
+# the sample maker are built), then the main job on generated samples: a
 # tangled 2D square (40 x 40 grid, 3,200 triangles) and a tangled cube
 # (8 x 8 x 8 grid, 3,072 tetrahedra), both with a fixed boundary, untangled
 # by build/bin/untangle_mesh.  Results and JSON reports go to build/sample/.
@@ -7,7 +8,7 @@
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$ROOT/scripts/setup.sh"
+"$ROOT/scripts/setup.sh" --sample
 
 BIN=$ROOT/build/bin
 SAMPLE=$ROOT/build/sample

@@ -3,11 +3,14 @@
 # the project in build/ (Release).  Idempotent: quiet about packages unless
 # one is missing; a second run only rebuilds what changed.
 #
-# usage: scripts/setup.sh [--sanitize] [--doc]
+# usage: scripts/setup.sh [--sanitize] [--doc] [--sample]
 #   --sanitize  build in build-asan/ instead: Debug, AddressSanitizer and
 #               UndefinedBehaviorSanitizer (-DMESH_UNTANGLING_SANITIZE=ON)
 #   --doc       also install doxygen, bibtex and MathJax, and build the
 #               manual (HTML in BUILD/doc/Mesh_untangling/html)
+#   --sample    build only the command-line tool and the sample maker
+#               (scripts/run_sample.sh: about 3 minutes on 2 cores, where
+#               the tests, fuzzers and benchmarks take about 30)
 # Environment: JOBS (parallel build jobs, default 2).
 set -euo pipefail
 trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
@@ -16,6 +19,7 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD_DIR=$ROOT/build
 CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release)
 WITH_DOC=0
+TARGETS=()
 for arg in "$@"; do
   case $arg in
     --sanitize)
@@ -23,11 +27,13 @@ for arg in "$@"; do
       CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DMESH_UNTANGLING_SANITIZE=ON) ;;
     --doc)
       WITH_DOC=1 ;;
+    --sample)
+      TARGETS=(--target untangle_mesh_cli make_tangled_mesh) ;;
     -h|--help)
-      sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *)
-      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc])" >&2
+      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc] [--sample])" >&2
       exit 2 ;;
   esac
 done
@@ -94,7 +100,7 @@ if ! cmake -S "$ROOT" -B "$BUILD_DIR" "${CMAKE_ARGS[@]}" > "$BUILD_DIR/configure
   echo "setup.sh: FAILED: cmake configuration (log: $BUILD_DIR/configure.log)" >&2
   exit 1
 fi
-cmake --build "$BUILD_DIR" -j "${JOBS:-2}"
+cmake --build "$BUILD_DIR" -j "${JOBS:-2}" "${TARGETS[@]}"
 if [ "$WITH_DOC" = 1 ]; then
   cmake --build "$BUILD_DIR" --target doc
   echo "setup.sh: manual in $BUILD_DIR/doc/Mesh_untangling/html/index.html"
