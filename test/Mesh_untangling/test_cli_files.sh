@@ -126,7 +126,7 @@ started() {
   shift
   "$UNTANGLE" "$@" > "$name.out" 2> "$name.err" &
   pid=$!
-  for _ in $(seq 600); do
+  for _ in $(seq 1800); do   # (3 minutes: the sanitizers' build is much slower)
     grep -q '^step' "$name.err" 2> /dev/null && return 0
     kill -0 "$pid" 2> /dev/null || return 1
     sleep 0.1
