@@ -49,6 +49,7 @@ namespace {
 struct Arguments
 {
   std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto";
+  std::string targets = "rest";   // the shapes the energy pulls toward: the rest's, or regular simplices
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
   std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
@@ -367,6 +368,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   nlohmann::ordered_json j;
   j["input"] = args.input;
   j["rest"] = args.rest.empty() ? (mesh.rest.empty() ? "regular simplices" : args.input) : args.rest;
+  j["targets"] = mesh.rest.empty() || args.targets == "regular" ? "regular simplices" : "rest";
   j["output"] = args.output;
   j["fixed"] = fixed_source;
   j["dimension"] = element_dimension(mesh);
@@ -512,6 +514,7 @@ Run_options run_options(const Arguments& args, Progress_display* display)
                                                        : MU::Continuation::AUTOMATIC;
   options.continuation_steps = args.continuation_steps;
   options.refinement = args.refine;
+  options.regular_targets = args.targets == "regular";
   options.refinement_budget = args.refine_budget;
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
@@ -751,6 +754,7 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
 int run_seamless(const Arguments& args, Mesh_file& mesh)
 {
   if(!args.rest.empty()) throw Usage_error("--rest: the rest of a seamless parameterization is its surface (v lines)");
+  if(args.targets != "rest") throw Usage_error("--targets regular: a seamless parameterization's targets are its surface's triangles");
   if(args.init != "given") throw Usage_error("--init project: " + args.input + " has its map (vt with seams)");
   if(args.refine) throw Usage_error("--refine is not offered for seamless parameterizations (OBJ with seams)");
   if(!args.phantoms.empty())
@@ -849,6 +853,8 @@ int run(const Arguments& args)
     throw Usage_error("--seams " + args.seams + ": " + args.input + " has no seams (an OBJ whose vt differ at a vertex)");
   if(args.refine && mesh.cell_size != 0)
     throw Usage_error("--refine splits the edges of simplices; " + args.input + " holds " + element_kind(mesh));
+  if(args.refine && args.targets == "regular")
+    throw Usage_error("--refine untangles toward the rest's shapes: it does not take --targets regular");
   check_output_paths(args);
   Run run;
   run.fixed = fixed_vertices(args, mesh, run.fixed_source);
@@ -933,6 +939,10 @@ int main(int argc, char** argv)
     ->check(fraction_from_0_to_1);
   app.add_option("--max-iterations", args.max_iterations, "largest number of eps steps")->check(whole_number_from_1);
   app.add_option("--time-limit", args.time_limit, "seconds, checked after each eps step")->check(seconds_from_0);
+  app.add_option("--targets", args.targets, "target shapes of the energy: 'rest' (the rest's elements, the "
+                 "default) or 'regular' (regular simplices: better conditioned; the rest, when given, still decides "
+                 "which orientation is right)")
+    ->check(CLI::IsMember({"rest", "regular"}));
   app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
                  "projected on its best-fit plane; the surface is the rest)")
     ->check(CLI::IsMember({"given", "project"}));

@@ -385,6 +385,17 @@ check "cube: boundary_self_intersections_after 0" json_is cube.json boundary_sel
 check "cube: overwound_interior_edges 0" json_is cube.json overwound_interior_edges 0
 check "cube: overwound_boundary_edges 0" json_is cube.json overwound_boundary_edges 0
 check "cube: max_covering reported" [ -n "$(json_get cube.json max_covering)" ]
+# --targets regular: the same cube toward regular tetrahedra; the rest of
+# the .input still judges the result, and the map differs from the one the
+# rest's shapes give.
+run cube_regular cube.input --targets regular -o cube-regular.input --report cube_regular.json -q
+check "--targets regular: exit 0" rc_is cube_regular 0
+check "--targets regular: reported" json_is cube_regular.json targets '"regular simplices"'
+check "--targets rest (the default): reported" json_is cube.json targets '"rest"'
+check "--targets regular: inverted_after 0" json_is cube_regular.json inverted_after 0
+check "--targets regular: handles unchanged" [ "$(handle_rows cube.input)" = "$(handle_rows cube-regular.input)" ]
+differ() { ! cmp -s "$1" "$2"; }
+check "--targets regular: another map than the rest's targets give" differ cube-untangled.input cube-regular.input
 run cube_vtk small3d.input -o cube.vtk --report cube_vtk.json -q
 check "cube -o .vtk: exit 0" rc_is cube_vtk 0
 check "cube -o .vtk: small cube was tangled" json_positive cube_vtk.json inverted_before
@@ -497,6 +508,9 @@ fails missing_input 'missing\.input: file not found' missing.input
 fails unknown_extension "s4\\.xyz: unsupported file extension '\\.xyz'" s4.xyz
 fails unknown_output_extension "out\\.ply: unsupported output extension" square.input -o out.ply
 fails unknown_solver 'solver.*foo' square.input --solver foo
+fails unknown_targets 'targets: .*foo' square.input --targets foo
+fails regular_targets_refined "--refine untangles toward the rest's shapes: it does not take --targets regular" \
+  cube.input --targets regular --refine -o x.input
 fails theta_too_big 'theta.*2' square.input --theta 2
 fails theta_negative 'theta' square.input --theta -0.5
 fails zero_iterations "max-iterations: must be a whole number, 1 or more, not '0'" square.input --max-iterations 0

@@ -100,11 +100,11 @@ std::vector<Point<d>> cgal_points(const std::vector<Coordinates>& points)
 
 /// Calls `untangle(rest)` with the rest shape as the package reads it: the
 /// rest points of `mesh` (3D rest triangles and quadrilaterals are laid flat by the package),
-/// or none (regular targets).
+/// or none (regular targets; also with `regular_targets`, the rest then only judges the result).
 template <int d, typename Untangle>
-auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle)
+auto with_rest_points(const Mesh_file& mesh, const Untangle& untangle, bool regular_targets = false)
 {
-  if(mesh.rest.empty()) return untangle(CGAL::parameters::default_values());
+  if(mesh.rest.empty() || regular_targets) return untangle(CGAL::parameters::default_values());
   if constexpr(d == 2) {
     if(mesh.rest_dimension == 3)
       return untangle(MU::parameters::rest_points(cgal_points<3>(mesh.rest)));
@@ -191,7 +191,7 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
     return CGAL::untangle_simplex_soup(points, simplices,
                                        MU::parameters::phantom_output(std::back_inserter(phantoms),
                                        MU::parameters::element_figures_output(std::back_inserter(figures), refining_np)));
-  });
+  }, options.regular_targets);
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   grow_by_refinement<d>(mesh, points, simplices, added);
   for(std::size_t v = 0; v < points.size(); ++v)
@@ -240,7 +240,7 @@ Untangling_result untangle_cells(Mesh_file& mesh, const std::vector<bool>& is_fi
     return CGAL::untangle_cell_soup(points, cells,
                                     MU::parameters::element_figures_output(std::back_inserter(figures), package_np));
   };
-  const Untangling_result result = with_rest_points<d>(mesh, run);
+  const Untangling_result result = with_rest_points<d>(mesh, run, options.regular_targets);
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   for(std::size_t v = 0; v < points.size(); ++v)
     for(int c = 0; c < d; ++c) mesh.map[v][c] = points[v][c];

@@ -45,6 +45,9 @@ struct Run_options
   std::function<void(const CGAL::Mesh_untangling::Untangling_step&)> progress;
   /// asked after every eps step: true stops the run there, and the best map so far is its result
   std::function<bool()> interrupted;
+  /// regular simplices as the targets even where the mesh has a rest; the
+  /// verdict (check_mesh_file) still judges orientations against the rest
+  bool regular_targets = false;
   /// told the fraction of the run done (Mesh_untangling::parameters::progress_callback); false cancels
   std::function<bool(double)> progress_fraction;
   /// Mesh_untangling::parameters::refinement: split interior edges when the
