@@ -33,17 +33,24 @@ namespace mu_fuzz {
 namespace fs = std::filesystem;
 
 // One directory per process (libFuzzer's -jobs run several), removed at exit.
+// The removal is registered once the path is made: a function registered
+// with atexit while a static is still being initialized runs after that
+// static's destructor (ASan: heap-use-after-free at exit, seen in CI when a
+// run first reached a round trip).
 inline const fs::path& scratch_directory()
 {
   static const fs::path directory = [] {
     fs::path d = fs::temp_directory_path() / ("mesh_untangling_fuzz_" + std::to_string(::getpid()));
     fs::create_directories(d);
-    std::atexit([] {
-      std::error_code ec;
-      fs::remove_all(scratch_directory(), ec);
-    });
     return d;
   }();
+  static const bool removed_at_exit = [] {
+    return std::atexit([] {
+      std::error_code ec;
+      fs::remove_all(directory, ec);
+    }) == 0;
+  }();
+  (void)removed_at_exit;
   return directory;
 }
 
