@@ -5,10 +5,22 @@
 # (8 x 8 x 8 grid, 3,072 tetrahedra), both with a fixed boundary, untangled
 # by build/bin/untangle_mesh.  Results and JSON reports go to build/sample/.
 # Exit status: 0 if both results are locally invertible, else non-zero.
+#
+# usage: scripts/run_sample.sh [--python]
+#   --python  also build the Python module and untangle the same samples
+#             from Python (examples/Mesh_untangling/python/untangle_file.py):
+#             the results must be the command-line tool's, bit for bit
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$ROOT/scripts/setup.sh" --sample
+python=0
+for arg in "$@"; do
+  case $arg in
+    --python) python=1 ;;
+    *) echo "run_sample.sh: unknown argument '$arg' (usage: scripts/run_sample.sh [--python])" >&2; exit 2 ;;
+  esac
+done
+if [ "$python" = 1 ]; then "$ROOT/scripts/setup.sh" --sample --python; else "$ROOT/scripts/setup.sh" --sample; fi
 
 BIN=$ROOT/build/bin
 SAMPLE=$ROOT/build/sample
@@ -49,4 +61,19 @@ printf '%-7s %8s %9s %7s %9s %8s %10s %12s %6s %8s\n' "" "" "" "" before after i
 for line in "${summary[@]}"; do echo "$line"; done
 echo
 echo "results and reports: $SAMPLE/{square,cube}-untangled.input, $SAMPLE/{square,cube}.json"
+
+if [ "$python" = 1 ]; then
+  for name in square cube; do
+    echo
+    echo "== python3 untangle_file.py $SAMPLE/$name.input (PYTHONPATH=$ROOT/build/python)"
+    PYTHONPATH=$ROOT/build/python /usr/bin/python3 "$ROOT/examples/Mesh_untangling/python/untangle_file.py" \
+      "$SAMPLE/$name.input" "$SAMPLE/$name-python.input" || status=1
+    if cmp -s "$SAMPLE/$name-python.input" "$SAMPLE/$name-untangled.input"; then
+      echo "$name: the Python result is the command-line tool's, bit for bit"
+    else
+      echo "run_sample.sh: $name: the Python result differs from the command-line tool's" >&2
+      status=1
+    fi
+  done
+fi
 exit $status

@@ -3,7 +3,7 @@
 # the project in build/ (Release).  Idempotent: quiet about packages unless
 # one is missing; a second run only rebuilds what changed.
 #
-# usage: scripts/setup.sh [--sanitize] [--doc] [--sample]
+# usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python]
 #   --sanitize  build in build-asan/ instead: Debug, AddressSanitizer and
 #               UndefinedBehaviorSanitizer (-DMESH_UNTANGLING_SANITIZE=ON)
 #   --doc       also install doxygen, bibtex and MathJax, and build the
@@ -11,6 +11,8 @@
 #   --sample    build only the command-line tool and the sample maker
 #               (scripts/run_sample.sh: about 3 minutes on 2 cores, where
 #               the tests, fuzzers and benchmarks take about 30)
+#   --python    with --sample: also build the Python module mesh_untangling
+#               (BUILD/python; the full build always builds it)
 # Environment: JOBS (parallel build jobs, default 2).
 set -euo pipefail
 trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
@@ -19,7 +21,8 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD_DIR=$ROOT/build
 CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release)
 WITH_DOC=0
-TARGETS=()
+SAMPLE=0
+WITH_PYTHON=0
 for arg in "$@"; do
   case $arg in
     --sanitize)
@@ -28,15 +31,24 @@ for arg in "$@"; do
     --doc)
       WITH_DOC=1 ;;
     --sample)
-      TARGETS=(--target untangle_mesh_cli make_tangled_mesh) ;;
+      SAMPLE=1 ;;
+    --python)
+      WITH_PYTHON=1 ;;
     -h|--help)
-      sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *)
-      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc] [--sample])" >&2
+      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python])" >&2
       exit 2 ;;
   esac
 done
+TARGETS=()
+if [ "$SAMPLE" = 1 ]; then
+  TARGETS=(--target untangle_mesh_cli make_tangled_mesh)
+  [ "$WITH_PYTHON" = 1 ] && TARGETS+=(mesh_untangling_python)
+else
+  WITH_PYTHON=1
+fi
 
 # 1. Packages (Debian).
 # libopenblas0-serial: CHOLMOD's supernodal factorization calls BLAS, and
@@ -55,6 +67,11 @@ done
 PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
           libsuitesparse-dev libopenblas0-serial liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev
           libmpfr-dev)
+# The Python module (python/, built for /usr/bin/python3): pybind11 and
+# numpy; meshio for the example that reads and writes other formats.
+if [ "$WITH_PYTHON" = 1 ]; then
+  PACKAGES+=(python3-dev python3-numpy pybind11-dev python3-meshio)
+fi
 # The manual (--doc only): doxygen; texlive-binaries for bibtex, which
 # formats the references (doc/Mesh_untangling/references.bib); libjs-mathjax
 # so that the formulas display without network access.

@@ -1,0 +1,426 @@
+# Copyright (c) 2026 Mesh_untangling contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The Python module against the command-line tool and against bad input.
+
+Run by ctest with PYTHONPATH at the build's python folder and, in the
+environment, MU_CLI (untangle_mesh) and MU_MAKE (make_tangled_mesh).
+"""
+import os
+import signal
+import subprocess
+import tempfile
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import mesh_untangling as mu
+
+CLI = os.environ["MU_CLI"]
+MAKE = os.environ["MU_MAKE"]
+
+
+def make(kind, n, amplitude, seed, path):
+    subprocess.run([MAKE, kind, str(n), str(amplitude), str(seed), path], check=True, stdout=subprocess.DEVNULL)
+
+
+def tangled_square(n=12):
+    """An n x n grid of the unit square, two triangles a cell, the middle vertex
+    pushed across its neighbours; the boundary vertex ids."""
+    xs = np.linspace(0, 1, n + 1)
+    vertices = np.array([[x, y] for y in xs for x in xs])
+    triangles = []
+    for j in range(n):
+        for i in range(n):
+            a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i
+            triangles += [[a, b, c], [a, c, d]]
+    middle = (n // 2) * (n + 1) + n // 2
+    vertices[middle] += [3.5 / n, 2.5 / n]
+    boundary = [v for v in range(len(vertices)) if vertices[v][0] in (0, 1) or vertices[v][1] in (0, 1)]
+    return vertices, np.array(triangles), boundary
+
+
+class Samples(unittest.TestCase):
+    """The README's samples: the same bits as untangle_mesh."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.TemporaryDirectory()
+        make("square", 40, 2, 1, os.path.join(cls.dir.name, "square.input"))
+        make("cube", 8, 1.0, 1, os.path.join(cls.dir.name, "cube.input"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.dir.cleanup()
+
+    def same_as_cli(self, name, cli_options=(), **options):
+        path = os.path.join(self.dir.name, name + ".input")
+        output = os.path.join(self.dir.name, name + "-cli.input")
+        cli = subprocess.run([CLI, path, "-o", output, "-q", *cli_options])
+        mesh = mu.read(path)
+        before = mesh.vertices.copy()
+        vertices, result = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed, **options)
+        self.assertEqual(cli.returncode, 0 if result.is_locally_invertible else 1)
+        written = mu.read(output)
+        self.assertTrue(np.array_equal(vertices, written.vertices), name + ": not the CLI's bits")
+        self.assertTrue(np.array_equal(mesh.vertices, before), "the caller's array was modified")
+        return mesh, vertices, result
+
+    def test_square_same_bits_as_cli(self):
+        mesh, vertices, result = self.same_as_cli("square")
+        self.assertEqual(result.status, mu.Status.SUCCESS)
+        self.assertEqual((result.number_of_vertices, result.number_of_elements), (1681, 3200))
+        self.assertEqual(result.number_of_fixed_vertices, 160)
+        self.assertGreater(result.inverted_before, 0)
+        self.assertEqual(result.inverted_after, 0)
+        self.assertEqual(vertices.shape, (1681, 2))
+        self.assertTrue(np.array_equal(vertices[mesh.fixed], mesh.vertices[mesh.fixed]), "a fixed vertex moved")
+        verdict = mu.check_local_invertibility(vertices, mesh.elements, rest=mesh.rest)
+        self.assertTrue(verdict.locally_invertible)
+        self.assertEqual(len(verdict.inverted_elements), 0)
+
+    def test_cube_same_bits_as_cli(self):
+        mesh, vertices, result = self.same_as_cli("cube")
+        self.assertEqual(result.status, mu.Status.SUCCESS)
+        self.assertEqual(result.number_of_elements, 3072)
+        self.assertEqual(result.overwound_vertices_after + result.overwound_edges_after, 0)
+        before = mu.check_local_invertibility(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed)
+        self.assertEqual(before.inverted, result.inverted_before)
+        self.assertEqual(len(before.inverted_elements), before.inverted)
+        self.assertFalse(before)
+
+    def test_options_reach_the_solver_as_in_the_cli(self):
+        # the published scheme's solver, regular targets, a theta: the same bits as with the CLI's options
+        self.same_as_cli("square", ["--solver", "lbfgs", "--targets", "regular", "--theta", "0.25"],
+                         solver="lbfgs", targets="regular", theta=0.25)
+
+    def test_thread_counts_give_the_same_bits(self):
+        mesh = mu.read(os.path.join(self.dir.name, "cube.input"))
+        one, _ = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed, threads=1)
+        two, _ = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed, threads=2)
+        self.assertTrue(np.array_equal(one, two))
+
+    def test_out_untangles_in_place(self):
+        mesh = mu.read(os.path.join(self.dir.name, "square.input"))
+        expected, _ = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed)
+        vertices = mesh.vertices.copy()
+        returned, result = mu.untangle(vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed, out=vertices)
+        self.assertIs(returned, vertices)
+        self.assertTrue(result.is_locally_invertible)
+        self.assertTrue(np.array_equal(vertices, expected))
+        with self.assertRaisesRegex(ValueError, "out must have the shape of vertices"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, out=np.zeros((3, 2)))
+        with self.assertRaisesRegex(TypeError, "float64"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, out=np.zeros(mesh.vertices.shape, np.float32))
+
+
+class Callbacks(unittest.TestCase):
+    def setUp(self):
+        self.vertices, self.triangles, self.boundary = tangled_square()
+
+    def test_progress_cancel_returns_the_input(self):
+        fractions = []
+
+        def progress(fraction):
+            fractions.append(fraction)
+            return False
+
+        vertices, result = mu.untangle(self.vertices, self.triangles, fixed=self.boundary, progress=progress)
+        self.assertEqual(result.status, mu.Status.CANCELLED)
+        self.assertTrue(result.input_returned or np.array_equal(vertices, self.vertices))
+        self.assertTrue(np.array_equal(vertices, self.vertices), "a cancelled run changed the map")
+        self.assertEqual(fractions, [0.0])
+
+    def test_progress_goes_up_to_one(self):
+        fractions = []
+        _, result = mu.untangle(self.vertices, self.triangles, fixed=self.boundary, progress=fractions.append)
+        self.assertTrue(result.is_locally_invertible)
+        self.assertEqual(fractions[-1], 1.0)
+        self.assertEqual(fractions, sorted(fractions))
+
+    def test_callback_sees_steps_and_can_stop(self):
+        steps = []
+        _, result = mu.untangle(self.vertices, self.triangles, fixed=self.boundary, theta=0.5,
+                                callback=lambda s: steps.append(s) or False)
+        self.assertEqual(len(steps), 1)
+        self.assertIsInstance(steps[0], mu.Step)
+        self.assertEqual(steps[0].step, 0)
+        if not result.is_locally_invertible:
+            self.assertEqual(result.status, mu.Status.STOPPED_BY_CALLBACK)
+
+    def test_an_exception_in_a_callback_is_raised_again(self):
+        def callback(step):
+            raise RuntimeError("from the callback")
+        with self.assertRaisesRegex(RuntimeError, "from the callback"):
+            mu.untangle(self.vertices, self.triangles, fixed=self.boundary, callback=callback)
+
+    def test_ctrl_c_raises_keyboard_interrupt(self):
+        def callback(step):
+            signal.raise_signal(signal.SIGINT)
+        with self.assertRaises(KeyboardInterrupt):
+            mu.untangle(self.vertices, self.triangles, fixed=self.boundary, callback=callback)
+
+    def test_the_gil_is_released_during_a_run(self):
+        # another Python thread runs while the untangler works
+        ticks = []
+        done = threading.Event()
+
+        def tick():
+            while not done.is_set():
+                ticks.append(1)
+                time.sleep(0.001)
+
+        vertices, triangles, boundary = tangled_square(150)
+        thread = threading.Thread(target=tick)
+        thread.start()
+        seen_in_callback = []
+        try:
+            _, result = mu.untangle(vertices, triangles, fixed=boundary, threads=1,
+                                    callback=lambda s: seen_in_callback.append(len(ticks)))
+        finally:
+            done.set()
+            thread.join()
+        self.assertTrue(result.is_locally_invertible)
+        self.assertGreater(result.seconds, 0.05)
+        self.assertGreater(len(ticks), 5, "the other thread did not run during %.2f s" % result.seconds)
+
+
+class Kinds(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.TemporaryDirectory()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.dir.cleanup()
+
+    def generated(self, kind, extension):
+        path = os.path.join(self.dir.name, kind + extension)
+        make(kind, 6, 0.9, 3, path)
+        rest = path.replace(extension, "-rest" + extension)
+        return mu.read(path), (mu.read(rest).vertices if os.path.exists(rest) else None)
+
+    def test_hexahedra(self):
+        mesh, rest = self.generated("hexcube", ".vtk")
+        self.assertEqual((mesh.kind, mesh.elements.shape), ("hexahedra", (216, 8)))
+        vertices, result = mu.untangle(mesh.vertices, mesh.elements, rest=rest, fixed=mesh.fixed)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertGreater(result.inverted_before, 0)
+        verdict = mu.check_local_invertibility(vertices, mesh.elements, rest=rest)
+        self.assertTrue(verdict)
+        self.assertGreater(verdict.min_scaled_jacobian, 0)
+        tangled = mu.check_local_invertibility(mesh.vertices, mesh.elements, rest=rest)
+        self.assertGreater(len(tangled.inverted_cells), 0)
+
+    def test_quadrilaterals(self):
+        mesh, rest = self.generated("quadsquare", ".vtk")
+        self.assertEqual(mesh.kind, "quadrilaterals")
+        self.assertEqual(mesh.vertices.shape[1], 2)
+        vertices, result = mu.untangle(mesh.vertices, mesh.elements, rest=rest, fixed=mesh.fixed)
+        self.assertTrue(result.is_locally_invertible, result.message)
+
+    def test_seamless_torus(self):
+        path = os.path.join(self.dir.name, "torus.obj")
+        make("torus", 6, 0.5, 1, path)
+        mesh = mu.read(path)
+        self.assertIsNotNone(mesh.rest_elements)
+        self.assertEqual(mesh.elements.shape, mesh.rest_elements.shape)
+        uv, result = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, rest_elements=mesh.rest_elements)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        output = os.path.join(self.dir.name, "torus-cli.obj")
+        subprocess.run([CLI, path, "-o", output, "-q"], check=True)
+        self.assertTrue(np.array_equal(uv, mu.read(output).vertices))
+
+    def test_free_boundary_protected_by_phantoms(self):
+        vertices, triangles, _ = tangled_square()
+        new, result = mu.untangle(vertices, triangles)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertGreater(result.number_of_phantom_elements, 0)
+        self.assertEqual(result.number_of_fixed_vertices, 0)
+
+    def test_fixed_boundary_and_mask(self):
+        vertices, triangles, boundary = tangled_square()
+        by_name, _ = mu.untangle(vertices, triangles, fixed="boundary")
+        mask = np.zeros(len(vertices), bool)
+        mask[boundary] = True
+        by_mask, result = mu.untangle(vertices, triangles, fixed=mask)
+        self.assertTrue(np.array_equal(by_name, by_mask))
+        self.assertEqual(result.number_of_fixed_vertices, len(boundary))
+        self.assertTrue(np.array_equal(by_mask[boundary], vertices[boundary]))
+
+    def test_array_likes(self):
+        vertices, triangles, boundary = tangled_square(4)
+        new, result = mu.untangle(vertices.tolist(), triangles.tolist(), fixed=boundary)
+        self.assertTrue(result.is_locally_invertible)
+        self.assertEqual(new.dtype, np.float64)
+        # float32 and Fortran order are converted; 3 columns with z = 0 are a planar map
+        flat = np.zeros((len(vertices), 3), np.float32, order="F")
+        flat[:, :2] = vertices
+        new3, _ = mu.untangle(flat, triangles.astype(np.int32), fixed=boundary)
+        self.assertEqual(new3.shape, (len(vertices), 3))
+        self.assertTrue(np.all(new3[:, 2] == 0))
+
+    def test_refinement_returns_the_refined_mesh(self):
+        # one free vertex inside a fixed Z-shaped octagon whose kernel is empty
+        # (test_cli's Z star): no position of it untangles its eight triangles
+        angles = np.arange(8) * np.pi / 4
+        rest = np.vstack([[0, 0], np.column_stack([np.cos(angles), np.sin(angles)])])
+        vertices = np.array([[1.5, 1.5], [1, 0], [3, 0], [3, 1], [2, 1], [2, 3], [0, 3], [0, 2], [1, 2]], float)
+        triangles = np.array([[0, i, i % 8 + 1] for i in range(1, 9)])
+        fixed = np.arange(1, 9)
+        _, unrefined = mu.untangle(vertices, triangles, rest=rest, fixed=fixed)
+        self.assertFalse(unrefined.is_locally_invertible)
+        self.assertIsNone(unrefined.elements)
+        refined, result = mu.untangle(vertices, triangles, rest=rest, fixed=fixed, refine=True)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        added = result.vertices_added
+        self.assertGreater(added, 0)
+        self.assertEqual(refined.shape, (9 + added, 2))
+        self.assertEqual(result.rest.shape, (9 + added, 2))
+        self.assertEqual(result.added_parents.shape, (added, 2))
+        self.assertTrue(np.array_equal(refined[fixed], vertices[fixed]))
+        self.assertTrue(mu.check_local_invertibility(refined, result.elements, rest=result.rest))
+
+
+class Files(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.dir.name, name)
+
+    def test_round_trip_with_fields(self):
+        vertices, triangles, boundary = tangled_square(4)
+        mu.write(self.path("m.vtk"), vertices, triangles, fixed=boundary,
+                 point_fields={"height": vertices[:, 1]}, cell_fields={"id": np.arange(len(triangles))})
+        mesh = mu.read(self.path("m.vtk"))
+        self.assertEqual(mesh.kind, "triangles")
+        self.assertTrue(np.array_equal(mesh.vertices, vertices))
+        self.assertTrue(np.array_equal(mesh.elements, triangles))
+        self.assertEqual(sorted(mesh.fixed.tolist()), boundary)
+        with open(self.path("m.vtk")) as f:
+            text = f.read()
+        self.assertIn("height", text)
+        self.assertIn("id", text)
+
+    def test_read_errors_name_file_and_line(self):
+        with open(self.path("bad.off"), "w") as f:
+            f.write("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
+        with self.assertRaisesRegex(mu.ReadError, r"bad\.off.*line 6|bad\.off:6"):
+            mu.read(self.path("bad.off"))
+        with self.assertRaisesRegex(mu.ReadError, "missing.vtk"):
+            mu.read(self.path("missing.vtk"))
+        with self.assertRaisesRegex(mu.ReadError, "supported"):
+            mu.read(self.path("mesh.xyz"))
+
+    def test_write_errors_leave_nothing(self):
+        vertices, triangles, _ = tangled_square(2)
+        with self.assertRaises(mu.WriteError):
+            mu.write(self.path("no/such/dir/m.vtk"), vertices, triangles)
+        with self.assertRaisesRegex(mu.WriteError, "tetrahedra|rest"):
+            mu.write(self.path("m.input"), vertices, triangles)   # .input needs rest positions
+        self.assertEqual(os.listdir(self.dir.name), [])
+        with self.assertRaisesRegex(ValueError, "fields are written to .vtk"):
+            mu.write(self.path("m.obj"), vertices, triangles, point_fields={"a": vertices[:, 0]})
+        with self.assertRaisesRegex(ValueError, "one value per point"):
+            mu.write(self.path("m.vtk"), vertices, triangles, point_fields={"a": [1, 2]})
+
+
+class BadInput(unittest.TestCase):
+    def setUp(self):
+        self.vertices, self.triangles, self.boundary = tangled_square(3)
+
+    def refused(self, error, pattern, *args, **kwargs):
+        before = self.vertices.copy()
+        with self.assertRaisesRegex(error, pattern):
+            mu.untangle(*args, **kwargs)
+        self.assertTrue(np.array_equal(self.vertices, before))
+
+    def test_shapes(self):
+        self.refused(ValueError, r"n x 2 or n x 3.*\(16, 4\)", np.zeros((16, 4)), self.triangles)
+        self.refused(ValueError, r"n x 2 or n x 3.*\(32,\)", np.zeros(32), self.triangles)
+        self.refused(ValueError, r"one row per element.*\(54,\)", self.vertices, self.triangles.ravel())
+        self.refused(ValueError, "5 columns", self.vertices, np.zeros((2, 5), int))
+        self.refused(ValueError, "rest has 3 vertices, vertices 16", self.vertices, self.triangles, rest=np.zeros((3, 2)))
+        self.refused(ValueError, "hexahedra need n x 3", self.vertices, np.zeros((1, 8), int) + np.arange(8))
+        self.refused(ValueError, "kind='tetrahedra' has 4 vertices per element", self.vertices, self.triangles,
+                     kind="tetrahedra")
+
+    def test_types(self):
+        self.refused(TypeError, "vertices must hold real numbers", np.full((16, 2), "a"), self.triangles)
+        self.refused(TypeError, "vertices must hold real numbers", self.vertices.astype(complex), self.triangles)
+        self.refused(TypeError, "elements must hold integer vertex ids, not dtype float64", self.vertices,
+                     self.triangles.astype(float))
+        self.refused(TypeError, "vertices: not an array", [[0, 1], [2]], self.triangles)
+        self.refused(TypeError, "fixed must be a boolean mask or integer vertex ids", self.vertices, self.triangles,
+                     fixed=[0.5])
+
+    def test_values(self):
+        nan = self.vertices.copy()
+        nan[7, 1] = np.nan
+        self.refused(ValueError, "coordinate 1 of vertex 7 is not finite", nan, self.triangles)
+        bad = self.triangles.copy()
+        bad[5, 2] = 16
+        self.refused(ValueError, r"triangle 5: vertex index 16 is out of range \[0, 15\]", self.vertices, bad)
+        bad[5, 2] = -1
+        self.refused(ValueError, "triangle 5 has the vertex id -1", self.vertices, bad)
+        bad[5, 2] = bad[5, 0]
+        self.refused(ValueError, "triangle 5: vertex .* is repeated", self.vertices, bad)
+        self.refused(ValueError, r"fixed: vertex id 99 is out of range \[0, 15\]", self.vertices, self.triangles,
+                     fixed=[99])
+        self.refused(ValueError, "mask of 3 flags, but there are 16", self.vertices, self.triangles,
+                     fixed=[True, False, True])
+        self.refused(ValueError, "fixed='all'", self.vertices, self.triangles, fixed="all")
+        lifted = np.zeros((16, 3))
+        lifted[:, :2] = self.vertices
+        lifted[3, 2] = 1
+        self.refused(mu.InvalidInputError, "vertex 3 of the map has z", lifted, self.triangles)
+
+    def test_options(self):
+        args = (self.vertices, self.triangles)
+        self.refused(ValueError, "solver='fast': expected one of 'auto', 'newton', 'lbfgs'", *args, solver="fast")
+        self.refused(ValueError, "continuation='sometimes'", *args, continuation="sometimes")
+        self.refused(ValueError, "targets='ideal'", *args, targets="ideal")
+        self.refused(ValueError, r"theta must be in \[0, 1\]", *args, theta=2)
+        self.refused(ValueError, "theta must be in", *args, theta=float("nan"))
+        self.refused(ValueError, "threads must be 1 or more, not 0", *args, threads=0)
+        self.refused(ValueError, "max_iterations must be 1 or more", *args, max_iterations=-3)
+        self.refused(ValueError, "time_limit must be a number of seconds", *args, time_limit=-1)
+        self.refused(ValueError, "refine=True splits the edges of simplices.*quadrilaterals",
+                     np.zeros((4, 2)), [[0, 1, 2, 3]], refine=True)
+        self.refused(TypeError, "kind must be a string", *args, kind=3)
+
+    def test_invalid_problem_names_the_defect(self):
+        # two triangles sharing an edge the same way round: not an orientable surface
+        vertices = np.array([[0., 0.], [1., 0.], [0., 1.], [1., 1.]])
+        with self.assertRaises(mu.InvalidInputError) as caught:
+            mu.untangle(vertices, [[0, 1, 2], [0, 1, 3], [0, 1, 2]])
+        self.assertIsInstance(caught.exception, ValueError)
+        self.assertEqual(str(caught.exception), "elements 0 and 2 have the same vertices")
+
+
+class Documentation(unittest.TestCase):
+    def test_every_parameter_is_documented(self):
+        import inspect
+        for function in (mu.untangle, mu.check_local_invertibility, mu.read, mu.write,
+                         mu.project_on_best_fit_plane):
+            for name in inspect.signature(function).parameters:
+                self.assertIn(name, function.__doc__, "%s: %s is not documented" % (function.__name__, name))
+
+    def test_stub_matches_the_module(self):
+        stub = os.path.join(os.path.dirname(mu.__file__), "__init__.pyi")
+        with open(stub) as f:
+            text = f.read()
+        for name in mu.__all__:
+            self.assertRegex(text, r"(def|class) %s\b|%s:" % (name, name), name + " is not in the stub")
+        for field in dir(mu.Result):
+            if not field.startswith("_"):
+                self.assertIn("    %s:" % field, text, "Result." + field + " is not in the stub")
+
+
+if __name__ == "__main__":
+    unittest.main()
