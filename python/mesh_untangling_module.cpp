@@ -465,16 +465,38 @@ struct Python_mesh
 {
   std::string kind;
   py::object vertices, elements, rest = py::none(), rest_elements = py::none(), fixed = py::none();
+  py::dict point_fields, cell_fields;   ///< .vtk: name -> one value per vertex or element
 };
+
+/// int64 for the integer fields, float64 for the others
+py::dict fields_dict(const IO::VTK_fields& fields)
+{
+  py::dict out;
+  for(const IO::VTK_field& f : fields) {
+    if(f.integer) {
+      Ids a(py::ssize_t(f.values.size()));
+      auto w = a.mutable_unchecked<1>();
+      for(std::size_t i = 0; i < f.values.size(); ++i) w(py::ssize_t(i)) = std::int64_t(f.values[i]);
+      out[py::str(f.name)] = a;
+    } else {
+      out[py::str(f.name)] = py::array_t<double>(py::ssize_t(f.values.size()), f.values.data());
+    }
+  }
+  return out;
+}
 
 Python_mesh read_file(const std::string& path)
 {
   Mesh_file mesh;
+  IO::VTK_fields cell_fields, point_fields;
   {
     py::gil_scoped_release release;
-    mesh = IO::read_mesh_file(path);
+    mesh = IO::internal::lowercase_extension(path) == ".vtk" ? IO::read_VTK(path, &cell_fields, &point_fields)
+                                                             : IO::read_mesh_file(path);
   }
   Python_mesh m;
+  m.point_fields = fields_dict(point_fields);
+  m.cell_fields = fields_dict(cell_fields);
   m.kind = mesh.has_corner_map() || mesh.simplex_size || mesh.cell_size ? element_kind(mesh) : "";
   const auto columns = [](int dimension) { return dimension == 2 ? 2 : 3; };
   if(mesh.has_corner_map()) {
@@ -702,6 +724,9 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .def_readonly("rest_elements", &Python_mesh::rest_elements, "seamless maps: the surface's triangles; else None")
     .def_readonly("fixed", &Python_mesh::fixed, "ids of the fixed vertices the file lists (.input handles, the "
                                                 ".vtk 'fixed' point field), or None")
+    .def_readonly("point_fields", &Python_mesh::point_fields, ".vtk: the point scalars of one component but "
+                                                              "'fixed', by name (int64 or float64); else empty")
+    .def_readonly("cell_fields", &Python_mesh::cell_fields, ".vtk: the cell scalars of one component, by name")
     .def("__repr__", [](const Python_mesh& mesh) {
       return "<Mesh " + std::to_string(py::len(mesh.elements)) + " " + mesh.kind + ", " +
              std::to_string(py::len(mesh.vertices)) + " vertices" + (mesh.rest.is_none() ? "" : ", with rest") +

@@ -152,9 +152,12 @@ def read(path):
     it), ``mesh.rest`` the rest when the file has one (OBJ: the v lines;
     .input: the rest), ``mesh.elements`` the elements, ``mesh.kind`` their
     kind, ``mesh.fixed`` the fixed vertex ids the file lists (.input handles,
-    the 'fixed' point field of a .vtk), and for an OBJ with seams
-    ``mesh.rest_elements`` the surface's triangles.  Raises ReadError naming
-    the file and line.
+    the 'fixed' point field of a .vtk), for an OBJ with seams
+    ``mesh.rest_elements`` the surface's triangles, and for a .vtk
+    ``mesh.point_fields`` and ``mesh.cell_fields``: its scalars of one
+    component by name (int64 for integer types, else float64; the fields
+    that write() and untangle_mesh write).  Raises ReadError naming the file
+    and line.
     """
     return _core._read(str(path))
 

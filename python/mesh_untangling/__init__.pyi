@@ -109,6 +109,8 @@ class Mesh:
     rest: Optional[npt.NDArray[np.float64]]
     rest_elements: Optional[npt.NDArray[np.int64]]
     fixed: Optional[npt.NDArray[np.int64]]
+    point_fields: dict[str, npt.NDArray]
+    cell_fields: dict[str, npt.NDArray]
 
 Fixed = Union[None, Literal["boundary"], ArrayLike]
 

@@ -456,6 +456,49 @@ void test_vtk_errors()
       "truncated: the POINTS block ends after 1 of 99999999999999");
 }
 
+// The fields write_VTK() writes read back by name, integer or not; scalars of
+// several components and other attributes skipped; 'fixed' is the fixed
+// vertices', not a field; a value that is no number names its line.
+void test_vtk_fields_read_back()
+{
+  Mesh_file m;
+  m.simplex_size = 3;
+  m.simplices = {{0, 1, 2, 0}};
+  m.map = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.map_dimension = 2;
+  m.has_fixed = true;
+  m.fixed = {1};
+  const IO::VTK_fields cells{{"det_J", {0.25}, false}, {"inverted", {1}, true}};
+  const IO::VTK_fields points{{"height", {0.5, -1e-300, 3}, false}};
+  IO::write_VTK(temp_path("fields.vtk"), m, cells, points);
+  IO::VTK_fields cells_read, points_read{{"stale", {1}, true}};
+  const Mesh_file back = IO::read_VTK(temp_path("fields.vtk"), &cells_read, &points_read);
+  CHECK(back.fixed == std::vector<std::size_t>({1}) && back.map == m.map);
+  CHECK(cells_read.size() == 2 && cells_read[0].name == "det_J" && !cells_read[0].integer &&
+        cells_read[0].values == std::vector<double>({0.25}) && cells_read[1].name == "inverted" && cells_read[1].integer);
+  CHECK(points_read.size() == 1 && points_read[0].name == "height" && points_read[0].values == points[0].values);
+  const std::string head = std::string(vtk_head) + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n";   // to line 16
+  IO::read_VTK(write_text("fields-vectors.vtk", head + "CELL_DATA 2\nSCALARS rgb float 3\nLOOKUP_TABLE default\n"
+                                                  "1 2 3 4 5 6\nVECTORS v double\n1 2 3 4 5 6\nSCALARS a unsigned_char\n"
+                                                  "LOOKUP_TABLE t\n7 8\n"), &cells_read, &points_read);
+  CHECK(points_read.empty() && cells_read.size() == 1 && cells_read[0].name == "a" && cells_read[0].integer &&
+        cells_read[0].values == std::vector<double>({7, 8}));
+  const Reader read_with_fields = [](const std::string& p) {
+    IO::VTK_fields c, q;
+    IO::read_VTK(p, &c, &q);
+  };
+  CHECK_READ_ERROR(read_with_fields, "fields-nan.vtk", head + "CELL_DATA 2\nSCALARS q double\nLOOKUP_TABLE default\n1 x\n", 20,
+                   "SCALARS 'q' value 1 is not a number: 'x'");
+  CHECK_READ_ERROR(read_with_fields, "fields-twice.vtk", head + "CELL_DATA 2\nSCALARS q int\nLOOKUP_TABLE default\n1 2\n"
+                                                                  "SCALARS q int\nLOOKUP_TABLE default\n1 2\n", 21,
+                   "a second CELL_DATA SCALARS 'q'");
+  CHECK_READ_ERROR(read_with_fields, "fields-short.vtk", head + "CELL_DATA 2\nSCALARS q int\nLOOKUP_TABLE default\n1\n",
+                   20, "truncated: the CELL_DATA block ends after 1 of 2 values");
+  // without fields asked for, the same file reads as before (its values are not looked at)
+  CHECK(IO::read_VTK(write_text("fields-ignored.vtk", head + "CELL_DATA 2\nSCALARS q double\nLOOKUP_TABLE default\n1 x\n"))
+          .simplices.size() == 2);
+}
+
 // The fixed vertices in a VTK file: the point scalar 'fixed', or a point
 // FIELD array of that name (as ParaView may save it); 'fixed' cell data is
 // not theirs.
@@ -946,6 +989,7 @@ int main(int argc, char** argv)
   test_off_errors();
   test_vtk_errors();
   test_vtk_fixed_flags();
+  test_vtk_fields_read_back();
   test_medit_errors();
   test_obj_errors();
   test_medit_value_messages();

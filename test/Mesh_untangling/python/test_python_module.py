@@ -302,10 +302,28 @@ class Files(unittest.TestCase):
         self.assertTrue(np.array_equal(mesh.vertices, vertices))
         self.assertTrue(np.array_equal(mesh.elements, triangles))
         self.assertEqual(sorted(mesh.fixed.tolist()), boundary)
-        with open(self.path("m.vtk")) as f:
-            text = f.read()
-        self.assertIn("height", text)
-        self.assertIn("id", text)
+        self.assertEqual(sorted(mesh.point_fields), ["height"])
+        self.assertTrue(np.array_equal(mesh.point_fields["height"], vertices[:, 1]))
+        self.assertEqual(mesh.cell_fields["id"].dtype, np.int64)
+        self.assertTrue(np.array_equal(mesh.cell_fields["id"], np.arange(len(triangles))))
+
+    def test_fields_of_the_cli(self):
+        # the .vtk that untangle_mesh writes: its per-element and per-vertex figures
+        path = self.path("square.input")
+        make("square", 6, 2, 1, path)
+        subprocess.run([CLI, path, "-o", self.path("out.vtk"), "-q"], check=True)
+        mesh = mu.read(self.path("out.vtk"))
+        self.assertEqual(mesh.cell_fields["inverted"].sum(), 0)
+        self.assertEqual(len(mesh.cell_fields["det_J"]), len(mesh.elements))
+        self.assertTrue(np.all(mesh.cell_fields["det_J"] > 0))
+        self.assertIn("covering", mesh.point_fields)
+        self.assertEqual(len(mesh.fixed), 24)
+        with open(self.path("bad.vtk"), "w") as f:
+            f.write("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n"
+                    "0 0 0 1 0 0 0 1 0\nCELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\nCELL_DATA 1\n"
+                    "SCALARS q double\nLOOKUP_TABLE default\nabc\n")
+        with self.assertRaisesRegex(mu.ReadError, r"bad\.vtk:14: SCALARS 'q' value 0 is not a number"):
+            mu.read(self.path("bad.vtk"))
 
     def test_read_errors_name_file_and_line(self):
         with open(self.path("bad.off"), "w") as f:

@@ -21,10 +21,14 @@ namespace IO {
 /// `map`; a file that mixes types is rejected, naming the line.  A point scalar named `fixed` (0 or 1 per
 /// point, as write_VTK() writes it) gives the fixed vertices (`has_fixed`
 /// and `fixed`); other point and cell data, field data and the array
-/// metadata that VTK 8 and later write are skipped.
-/// \throws Read_error if the file is missing, binary, or malformed, or if
-/// its `fixed` scalar holds anything but a 0 or a 1 per point.
-inline Mesh_file read_VTK(const std::string& path)
+/// metadata that VTK 8 and later write are skipped, but for the scalars of
+/// one component, which `cell_fields` and `point_fields` receive when given
+/// (as write_VTK() writes its fields; `integer` for the integer types).
+/// \throws Read_error if the file is missing, binary, or malformed, if
+/// its `fixed` scalar holds anything but a 0 or a 1 per point, or if a
+/// field kept has a value that is no number or two fields share a name.
+inline Mesh_file read_VTK(const std::string& path, VTK_fields* cell_fields = nullptr,
+                          VTK_fields* point_fields = nullptr)
 {
   return internal::read_or_report_memory(path, [&] {
     internal::Text_file file(path);
@@ -33,7 +37,9 @@ inline Mesh_file read_VTK(const std::string& path)
     internal::read_VTK_points(file, mesh);
     std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
     internal::read_VTK_cell_types(file, cells, mesh);
-    internal::read_VTK_attributes(file, mesh);
+    if(cell_fields) cell_fields->clear();
+    if(point_fields) point_fields->clear();
+    internal::read_VTK_attributes(file, mesh, cell_fields, point_fields);
     mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
     return mesh;
   });

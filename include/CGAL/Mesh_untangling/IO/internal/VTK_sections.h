@@ -353,11 +353,63 @@ inline void read_VTK_fixed_scalar(Text_file& file, const Token& scalars, const s
   read_VTK_fixed_values(file, scalars.line, what, mesh);
 }
 
+inline bool is_VTK_integer_type(const Token& type)
+{
+  static const char* const floats[] = {"float", "double", "vtktypefloat32", "vtktypefloat64"};
+  return std::none_of(std::begin(floats), std::end(floats), [&](const char* f) { return same_keyword(type.text, f); });
+}
+
+// 'SCALARS name type [components]' (`header`: the line after SCALARS) of one
+// component, 'LOOKUP_TABLE name', then `count` numbers: a field of `block`.
+// Scalars of several components are skipped (false), as VTK_field holds one.
+inline bool read_VTK_scalar_field(Text_file& file, const Token& scalars, const std::vector<Token>& header,
+                                  const char* block, std::size_t count, VTK_fields& fields)
+{
+  const std::string what = "SCALARS " + quote_token(header[0].text);
+  if(header.size() < 2 || header.size() > 3)
+    file.fail(scalars.line, "expected 'SCALARS name type [components]'");
+  check_VTK_data_type(file, header[1], what);
+  if(header.size() == 3 && to_size(file, header[2], "component count of " + what) != 1)
+    return false;
+  expect_VTK_keyword(file, "LOOKUP_TABLE");
+  Token table;
+  if(!file.next_token(table))
+    file.fail_truncated("expected the LOOKUP_TABLE name of " + what);
+  VTK_field field{std::string(header[0].text), std::vector<double>(), is_VTK_integer_type(header[1])};
+  field.values.reserve(file.sane_capacity(count));
+  // (the values write_VTK() refuses to write are refused: a field read writes back)
+  for(std::size_t i = 0; i < count; ++i) {
+    const Token t = next_VTK_value(file, block, i, count, "values");
+    double value = 0;
+    if(parse_double(t.text, value) != Number_status::OK)
+      value = to_double(file, t, what + " value " + std::to_string(i));   // throws, naming the value
+    if(!std::isfinite(value))
+      file.fail(t.line, what + " value " + std::to_string(i) + " is not finite: " + quote_token(t.text));
+    if(field.integer && value != std::floor(value))
+      file.fail(t.line, what + " value " + std::to_string(i) + " is not a whole number, but the type is " +
+                            quote_token(header[1].text));
+    field.values.push_back(value);
+  }
+  // (whole numbers past an int's range are kept, as doubles)
+  if(field.integer && std::any_of(field.values.begin(), field.values.end(),
+                                  [](double v) { return std::abs(v) > 2147483647.; }))
+    field.integer = false;
+  for(const VTK_field& f : fields)
+    if(f.name == field.name)
+      file.fail(scalars.line, "a second " + std::string(block) + " " + what);
+  // (write_VTK() writes no CELL_DATA for no cell)
+  if(count > 0 || std::string(block) == "POINT_DATA") fields.push_back(std::move(field));
+  return true;
+}
+
 // Point and cell attributes may follow.  Of them the reader takes the point
 // scalar 'fixed' (1 for a fixed vertex) that write_VTK() writes, also as a
 // point FIELD array, and checks that each block announces as many values as
-// there are points or cells; the rest is skipped.
-inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh)
+// there are points or cells; with `cell_fields` and `point_fields` it keeps
+// the other scalars of one component, as write_VTK() writes its fields; the
+// rest is skipped.
+inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* cell_fields = nullptr,
+                                VTK_fields* point_fields = nullptr)
 {
   Token token;
   if(!file.next_token(token))
@@ -365,12 +417,14 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh)
   static const char* const blocks[] = {"POINT_DATA", "CELL_DATA", "FIELD", "METADATA"};
   if(std::none_of(std::begin(blocks), std::end(blocks), [&](const char* b) { return same_keyword(token.text, b); }))
     file.fail(token.line, "unexpected " + quote_token(token.text) + " after CELL_TYPES");
-  bool in_point_data = false;
+  bool in_point_data = false, in_cell_data = false;
+  std::size_t block_size = 0;
   do {
     if(same_keyword(token.text, "METADATA")) {
       skip_VTK_metadata(file);
     } else if(same_keyword(token.text, "POINT_DATA") || same_keyword(token.text, "CELL_DATA")) {
       in_point_data = same_keyword(token.text, "POINT_DATA");
+      in_cell_data = !in_point_data;
       const std::string block(token.text);
       const std::size_t expected = in_point_data ? mesh.map.size() : mesh.simplices.size() + mesh.cells.size();
       Token count;
@@ -380,14 +434,18 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh)
       if(announced != expected)
         file.fail(count.line, block + " announces " + std::to_string(announced) + " values but the file has "
                                   + std::to_string(expected) + (in_point_data ? " points" : " cells"));
+      block_size = expected;
     } else if(in_point_data && same_keyword(token.text, "FIELD")) {
       read_VTK_field_data(file, &mesh);
-    } else if(in_point_data && same_keyword(token.text, "SCALARS")) {
+    } else if(same_keyword(token.text, "SCALARS") && (in_point_data || (in_cell_data && cell_fields != nullptr))) {
       std::vector<Token> header;   // the rest of the SCALARS line
       if(!file.next_line(header) || header[0].line != token.line)
         file.fail(token.line, "expected 'SCALARS name type [components]'");
-      if(header[0].text == VTK_fixed_field)
+      VTK_fields* fields = in_point_data ? point_fields : cell_fields;
+      if(in_point_data && header[0].text == VTK_fixed_field)
         read_VTK_fixed_scalar(file, token, header, mesh);
+      else if(fields != nullptr)
+        read_VTK_scalar_field(file, token, header, in_point_data ? "POINT_DATA" : "CELL_DATA", block_size, *fields);
     }
   } while(file.next_token(token));
 }
