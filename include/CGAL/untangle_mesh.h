@@ -135,10 +135,12 @@ untangle_mesh(TriangleMesh& tm, VertexUVMap uv, const NamedParameters& np = para
 ///
 /// `Untangling_result::overwound_vertices_after` and the vertex numbers in
 /// `Untangling_result::message` count wedges.  A seam whose sides are not
-/// related by such a transition (within 1e-6 of the uv's extent), an edge
-/// of a seam with no length in uv, or transitions around a vertex that do
+/// related by such a transition (within 1e-6 of the uv's extent), a seam
+/// chain (the seam edges between two cones, junctions or boundary vertices)
+/// with no edge of any length in uv, or transitions around a vertex that do
 /// not close give `Untangling_status::INVALID_INPUT`, the message naming
-/// the edge (its vertices' numbers in `vertices(tm)` order) and faces.
+/// the edge or chain (its vertices' numbers in `vertices(tm)` order) and
+/// faces.  A seam edge with no length in uv takes its chain's transition.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}

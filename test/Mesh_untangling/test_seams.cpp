@@ -368,8 +368,8 @@ Edge_transitions transitions_of(tools::Seamless_surface& s, const MU::internal::
 
 /// Transitions given through the API instead of read off the uv: the ones
 /// detection finds give the same run bit for bit; one that contradicts the
-/// uv is refused with its edge named; a seam edge of no length in uv, which
-/// detection refuses, is untangled when its transition is given.
+/// uv is refused with its edge named; a seam edge of no length in uv is
+/// untangled, its transition given or read off its seam chain, the same bits.
 void check_given_transitions()
 {
   Mesh_file m = tools::make_seamless_cube(4);
@@ -417,7 +417,8 @@ void check_given_transitions()
   }
 
   // a seam edge collapsed to a point in uv on both sides (its second vertex's
-  // wedges moved onto the first's): detection cannot tell its rotation
+  // wedges moved onto the first's, two triangles of zero area): its own uv
+  // cannot tell its rotation, its seam chain can
   Mesh_file torus = tools::make_seamless_torus(6);
   const auto torus_seams = seams_of(torus);
   std::vector<int> wedges(torus.rest.size(), 0);
@@ -440,23 +441,103 @@ void check_given_transitions()
     }
     torus.corner_map[torus.simplex_corner_map[f][ib]] = torus.corner_map[torus.simplex_corner_map[f][ia]];
   }
-  {
-    tools::Seamless_surface s = tools::make_seamless_surface(torus);
-    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv);
-    std::cout << "collapsed seam edge, detected: " << r.message << "\n";
-    CHECK_MESSAGE(r.status == MU::Untangling_status::INVALID_INPUT && r.message.find("no length") != std::string::npos, r.message);
-  }
+  const auto collapsed_seams = seams_of(torus);   // (threw "no length in uv" before the chains)
+  CHECK(collapsed_seams.seam_edges.size() == torus_seams.seam_edges.size());
+  for(std::size_t k = 0; k < torus_seams.seam_edges.size() && k < collapsed_seams.seam_edges.size(); ++k)
+    CHECK(collapsed_seams.seam_edges[k].transition.turns == torus_seams.seam_edges[k].transition.turns &&
+          std::abs(collapsed_seams.seam_edges[k].transition.translation[0] - torus_seams.seam_edges[k].transition.translation[0]) < 1e-12 &&
+          std::abs(collapsed_seams.seam_edges[k].transition.translation[1] - torus_seams.seam_edges[k].transition.translation[1]) < 1e-12);
+  tools::Seamless_surface chained = tools::make_seamless_surface(torus);
+  const MU::Untangling_result rc = CGAL::untangle_mesh(chained.mesh, chained.uv);
   tools::Seamless_surface s = tools::make_seamless_surface(torus);
   const Edge_transitions t = transitions_of(s, torus_seams);
   const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::seam_transitions(t));
   std::cout << "collapsed seam edge, given: " << MU::to_string(r.status) << ", inverted " << r.inverted_before << " -> "
-            << r.inverted_after << (r.message.empty() ? "" : ": ") << r.message << "\n";
+            << r.inverted_after << (r.message.empty() ? "" : ": ") << r.message << "; chained: " << MU::to_string(rc.status)
+            << "\n";
   CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, r.message);
+  CHECK_MESSAGE(rc.status == MU::Untangling_status::SUCCESS, rc.message);
   CHECK(r.inverted_before > 0 && r.inverted_after == 0);
+  std::size_t differ = 0;
+  for(auto h : chained.mesh.halfedges())
+    if(!chained.mesh.is_border(h) && chained.uv[h] != s.uv[h]) ++differ;
+  CHECK_MESSAGE(differ == 0, differ << " corners differ between the chain's and the given transitions");
   Mesh_file after = torus;
   tools::read_back_corner_map(s, after);
   CHECK(negative_triangles(after) == 0);
   check_transitions_kept(tools::make_seamless_torus(6), after, "collapsed seam edge");
+  // the OBJ reader takes the collapsed map too (it checks the seams as detection does)
+  const std::string path = (std::filesystem::temp_directory_path() / "mu_test_seams_collapsed.obj").string();
+  MU::IO::write_OBJ(path, torus);
+  CHECK(MU::IO::read_OBJ(path).corner_map == torus.corner_map);
+  std::filesystem::remove(path);
+}
+
+/// Seam chains: the transition of a seam edge with no length in uv comes
+/// from the nearest edges of its chain that have one, through a run of such
+/// edges; a chain with none is refused with the chain named.
+void check_seam_chains()
+{
+  using MU::internal::detect_seams;
+  // a strip of 4 squares (vertices 0-4 at the bottom, 5-9 at the top), two
+  // triangles each, cut along its middle vertical line (2, 7): the right half
+  // is turned a quarter and moved
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t i = 0; i < 4; ++i) {
+    t.push_back({i, i + 1, i + 6});
+    t.push_back({i, i + 6, i + 5});
+  }
+  const MU::Seam_transition right{1, {10., 3.}};
+  const auto uv_of = [&](const std::vector<Uv>& points) {
+    std::vector<Uv> uv;
+    for(std::size_t f = 0; f < t.size(); ++f)
+      for(int i = 0; i < 3; ++i) {
+        const Uv p = points[t[f][i]];
+        uv.push_back(f >= 4 ? right(p) : p);   // faces 4-7: the right half
+      }
+    return uv;
+  };
+  std::vector<Uv> points;
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 5; ++i) points.push_back({double(i), double(j)});
+  const auto seams = detect_seams(10, t, uv_of(points));
+  CHECK(seams.seam_edges.size() == 1 && seams.seam_edges[0].transition.turns == 1);
+  // the cut is one edge between two boundary vertices: collapsed, its chain has no other edge
+  std::vector<Uv> collapsed = points;
+  collapsed[7] = collapsed[2];
+  CHECK_THROWS_MESSAGE(detect_seams(10, t, uv_of(collapsed)),
+                       "the seam chain from vertex 2 to vertex 7 through seam edge (2, 7) between faces");
+  CHECK_THROWS_MESSAGE(detect_seams(10, t, uv_of(collapsed)), "has no edge with a length in uv");
+
+  // a 4 x 3 grid cut up its middle line (2, 7, 12, 17): three seam edges,
+  // the right half turned a quarter and moved; its middle edge collapsed
+  std::vector<std::array<std::size_t, 3>> g;   // rows of 5 vertices: 0-4, 5-9, 10-14, 15-19
+  for(std::size_t r = 0; r < 3; ++r)
+    for(std::size_t i = 0; i < 4; ++i) {
+      const std::size_t a = 5 * r + i;
+      g.push_back({a, a + 1, a + 6});
+      g.push_back({a, a + 6, a + 5});
+    }
+  std::vector<Uv> grid;
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 5; ++i) grid.push_back({double(i), double(j)});
+  const auto grid_uv = [&](const std::vector<Uv>& p) {
+    std::vector<Uv> uv;
+    for(std::size_t f = 0; f < g.size(); ++f)
+      for(int i = 0; i < 3; ++i) uv.push_back(f % 8 >= 4 ? right(p[g[f][i]]) : p[g[f][i]]);
+    return uv;
+  };
+  const auto whole = detect_seams(20, g, grid_uv(grid));
+  CHECK(whole.seam_edges.size() == 3);
+  std::vector<Uv> pinched = grid;
+  pinched[12] = pinched[7];   // the middle edge (7, 12) of the cut has no length, on either side
+  const auto chained = detect_seams(20, g, grid_uv(pinched));
+  CHECK(chained.seam_edges.size() == 3);
+  for(const auto& e : chained.seam_edges)
+    CHECK((e.transition.turns == 1 && std::abs(e.transition.translation[0] - 10) < 1e-12 &&
+           std::abs(e.transition.translation[1] - 3) < 1e-12) ||
+          (e.transition.turns == 3 && std::abs(MU::internal::norm(e.transition.inverse().translation) -
+                                               MU::internal::norm(Uv{10., 3.})) < 1e-12));
 }
 
 /// A fan of 6 triangles around vertex 0 cut into three charts, turned by one,
@@ -589,6 +670,7 @@ int main()
     check_obj_round_trip();
     check_bad_seams();
     check_given_transitions();
+    check_seam_chains();
     check_free_translation_layout();
     check_covering_across_seams();
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);

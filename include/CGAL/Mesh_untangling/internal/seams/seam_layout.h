@@ -73,15 +73,112 @@ inline std::string edge_name(std::size_t a, std::size_t b)
   return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
 }
 
+/// The seam edges of `seams` whose transition could not be read off their own
+/// uv (no length on either side) take the transition of their seam chain:
+/// the chain runs on through the vertices where exactly two seam edges meet
+/// (with the same two wedges on either side), and ends at cones, junctions
+/// and the boundary; the transition of a seam is the same along it.  The
+/// nearest edges with a length on either side of a run of such edges give
+/// it; they must agree, and the edges must join their sides through it.
+/// `corners[k]` are the corners (a in the face, b in the face, a in the
+/// opposite face, b in the opposite face) of seam edge k, `unknown` those to
+/// resolve, `find` the wedge of a corner.  Throws Seam_error naming the
+/// chain when it has no edge with a length, or when its edges disagree.
+template <class Find>
+void resolve_seam_chains(Seams& seams, const std::vector<std::array<std::size_t, 3>>& triangles,
+                         const std::vector<Uv>& corner_uv, const std::vector<std::array<std::size_t, 4>>& corners,
+                         const std::vector<std::size_t>& unknown, const Find& find)
+{
+  const auto vertex = [&](std::size_t corner) { return triangles[corner / 3][corner % 3]; };
+  std::map<std::size_t, std::vector<std::size_t>> at_vertex;   // seam edges at a vertex
+  for(std::size_t k = 0; k < seams.seam_edges.size(); ++k)
+    for(int i = 0; i < 2; ++i) at_vertex[vertex(corners[k][i])].push_back(k);
+  // the wedges on the face's and on the opposite face's side of edge k at vertex v
+  const auto sides = [&](std::size_t k, std::size_t v) {
+    const int i = vertex(corners[k][0]) == v ? 0 : 1;
+    return std::make_pair(find(corners[k][i]), find(corners[k][2 + i]));
+  };
+  const auto edge_text = [&](std::size_t k) {
+    const auto& e = seams.seam_edges[k];
+    return "seam edge " + edge_name(vertex(corners[k][0]), vertex(corners[k][1])) + " between faces " +
+           std::to_string(e.face) + " and " + std::to_string(e.opposite_face);
+  };
+  std::vector<char> is_unknown(seams.seam_edges.size(), 0), resolved(seams.seam_edges.size(), 0);
+  for(std::size_t k : unknown) is_unknown[k] = 1;
+  const double tolerance = seams.tolerance;
+  for(std::size_t start : unknown) {
+    if(resolved[start]) continue;
+    // the run of unknown edges through `start` (each with the sense of its
+    // transition relative to start's), and the known edge met past each end
+    std::vector<std::pair<std::size_t, bool>> run{{start, true}};
+    struct End { std::size_t vertex; bool found = false; std::size_t edge = 0; Seam_transition t; };
+    End ends[2];
+    for(int direction = 0; direction < 2; ++direction) {
+      std::size_t k = start;
+      bool same = true;
+      std::size_t v = vertex(corners[start][direction]);
+      for(;;) {
+        ends[direction].vertex = v;
+        const auto& here = at_vertex[v];
+        if(here.size() != 2) break;   // a cone, a junction or the boundary: the chain ends
+        const std::size_t next = here[0] == k ? here[1] : here[0];
+        if(next == start) break;      // a closed chain of unknown edges
+        const auto [f1, g1] = sides(k, v);
+        const auto [f2, g2] = sides(next, v);
+        bool next_same = same;
+        if(f1 == g2 && g1 == f2) next_same = !same;
+        else if(!(f1 == f2 && g1 == g2)) break;
+        if(!is_unknown[next]) {
+          ends[direction].found = true;
+          ends[direction].edge = next;
+          ends[direction].t = next_same ? seams.seam_edges[next].transition : seams.seam_edges[next].transition.inverse();
+          break;
+        }
+        run.emplace_back(next, next_same);
+        k = next;
+        same = next_same;
+        v = vertex(corners[next][0]) == v ? vertex(corners[next][1]) : vertex(corners[next][0]);
+      }
+    }
+    const std::string chain = "the seam chain from vertex " + std::to_string(ends[0].vertex) + " to vertex " +
+                              std::to_string(ends[1].vertex) + " through " + edge_text(start);
+    const std::size_t face = seams.seam_edges[start].face;
+    if(!ends[0].found && !ends[1].found)
+      throw Seam_error(face, chain + " has no edge with a length in uv: the rotation across it cannot be detected "
+                             "(Mesh_untangling::parameters::seam_transitions can give it)");
+    const Seam_transition t = ends[0].found ? ends[0].t : ends[1].t;
+    if(ends[0].found && ends[1].found) {
+      const Seam_transition& u = ends[1].t;
+      if(((t.turns - u.turns) % 4 + 4) % 4 != 0 || norm(minus(t.translation, u.translation)) > 4 * tolerance)
+        throw Seam_error(face, chain + ": its edges on either side of the edges with no length in uv, " +
+                               edge_text(ends[0].edge) + " and " + edge_text(ends[1].edge) +
+                               ", have different transitions");
+    }
+    for(const auto& [k, same] : run) {
+      const Seam_transition tk = same ? t : t.inverse();
+      const auto& c = corners[k];
+      const double miss = (std::max)(norm(minus(tk(corner_uv[c[0]]), corner_uv[c[2]])),
+                                     norm(minus(tk(corner_uv[c[1]]), corner_uv[c[3]])));
+      if(!(miss <= 4 * tolerance))
+        throw Seam_error(seams.seam_edges[k].face, edge_text(k) + " has no length in uv, and its two sides are " +
+                                                     std::to_string(miss) + " apart through the transition of " + chain);
+      seams.seam_edges[k].transition = tk;
+      resolved[k] = 1;
+    }
+  }
+}
+
 /// Wedges and seam transitions of `triangles` (vertex ids, counterclockwise
 /// on an oriented surface) with uv `corner_uv[3 f + i]`.  Two faces sharing
 /// an edge are on one chart there when their uv at both ends agree within
 /// `relative_tolerance` of the uv's extent; else the edge is a seam, whose
 /// sides must be related by a rotation by a multiple of 90 degrees and a
-/// translation within that tolerance.  Throws Seam_error naming the edge and
-/// faces when they are not, when an edge has no length in uv (its rotation
-/// is then unknown), or when an edge is shared by more than two faces or by
-/// two faces of opposite orientations.
+/// translation within that tolerance.  A seam edge with no length in uv (a
+/// triangle of zero area: a tangled element) takes the transition of its
+/// seam chain (resolve_seam_chains()).  Throws Seam_error naming the edge
+/// and faces when the sides are not so related, naming the chain when its
+/// transition cannot be known, or when an edge is shared by more than two
+/// faces or by two faces of opposite orientations.
 ///
 /// When `given` is not empty, it holds the transitions instead:
 /// `given[3 f + i]` maps the uv of face f across its edge from corner i to
@@ -132,6 +229,10 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
     return c;
   };
   seams.vertex_on_boundary.assign(number_of_vertices, 0);
+  // the corners of each seam edge (a, b in its face, a, b in the other), and
+  // the seam edges whose transition their own uv cannot tell
+  std::vector<std::array<std::size_t, 4>> seam_corners;
+  std::vector<std::size_t> unknown;
   for(const auto& [edge, c] : directed) {
     const auto [a, b] = edge;
     const auto twin = directed.find({b, a});
@@ -154,6 +255,7 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
         parent[find(cb)] = find(gb);
       } else {
         seams.seam_edges.push_back({f, g, int(ca % 3), t});
+        seam_corners.push_back({ca, cb, ga, gb});
       }
       continue;
     }
@@ -164,8 +266,10 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
         parent[find(cb)] = find(gb);
         continue;
       }
-      throw Seam_error(f, "seam edge " + edge_name(a, b) + " between faces " + std::to_string(f) + " and " +
-                            std::to_string(g) + " has no length in uv: the rotation across it cannot be detected");
+      unknown.push_back(seams.seam_edges.size());   // (its chain's transition, below)
+      seams.seam_edges.push_back({f, g, int(ca % 3), Seam_transition{}});
+      seam_corners.push_back({ca, cb, ga, gb});
+      continue;
     }
     int best = 0;
     double best_error = std::numeric_limits<double>::infinity();
@@ -185,7 +289,9 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
       continue;
     }
     seams.seam_edges.push_back({f, g, int(ca % 3), t});
+    seam_corners.push_back({ca, cb, ga, gb});
   }
+  if(!unknown.empty()) resolve_seam_chains(seams, triangles, corner_uv, seam_corners, unknown, find);
 
   std::vector<std::size_t> wedge_of_class(3 * m, std::size_t(-1));
   seams.wedge_of_corner.resize(3 * m);
