@@ -321,6 +321,19 @@ struct Python_result
   std::optional<Ids> added_parents;    ///< per added vertex, the two vertices of the edge it split
 };
 
+/// `h` as a T, or a TypeError naming the parameter and what it was given
+/// (pybind11's own cast error names neither).
+template <typename T>
+T number(const py::handle& h, const char* name, const char* expected)
+{
+  try {
+    return h.cast<T>();
+  } catch(const py::cast_error&) {
+    throw py::type_error(std::string(name) + " must be " + expected + ", not " + std::string(py::repr(h)) + " (" +
+                         std::string(py::str(py::type::of(h).attr("__name__"))) + ")");
+  }
+}
+
 std::optional<std::string> optional_string(const py::handle& h, const char* name)
 {
   if(h.is_none()) return std::nullopt;
@@ -361,12 +374,12 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
   if(const auto t = optional_string(targets, "targets"))
     options.regular_targets = choice<bool>(*t, "targets", {{"rest", false}, {"regular", true}});
   if(!theta.is_none()) {
-    const double value = theta.cast<double>();
+    const double value = number<double>(theta, "theta", "a number");
     if(!(value >= 0 && value <= 1)) throw py::value_error("theta must be in [0, 1], not " + std::to_string(value));
     options.theta = value;
   }
   const auto whole_number = [](const py::handle& h, const char* name) {
-    const long long value = h.cast<long long>();
+    const long long value = number<long long>(h, name, "a whole number");
     if(value < 1) throw py::value_error(std::string(name) + " must be 1 or more, not " + std::to_string(value));
     return std::size_t(value);
   };
@@ -374,7 +387,7 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
   if(!max_iterations.is_none()) options.max_iterations = whole_number(max_iterations, "max_iterations");
   if(!refine_budget.is_none()) options.refinement_budget = whole_number(refine_budget, "refine_budget");
   if(!time_limit.is_none()) {
-    options.max_seconds = time_limit.cast<double>();
+    options.max_seconds = number<double>(time_limit, "time_limit", "a number of seconds");
     if(!(options.max_seconds >= 0))
       throw py::value_error("time_limit must be a number of seconds, 0 or more, not " + std::to_string(options.max_seconds));
   }

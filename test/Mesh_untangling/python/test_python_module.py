@@ -411,6 +411,10 @@ class BadInput(unittest.TestCase):
         self.refused(ValueError, "refine=True splits the edges of simplices.*quadrilaterals",
                      np.zeros((4, 2)), [[0, 1, 2, 3]], refine=True)
         self.refused(TypeError, "kind must be a string", *args, kind=3)
+        self.refused(TypeError, r"threads must be a whole number, not 1.5 \(float\)", *args, threads=1.5)
+        self.refused(TypeError, r"theta must be a number, not 'a' \(str\)", *args, theta="a")
+        self.refused(TypeError, "time_limit must be a number of seconds, not 'x'", *args, time_limit="x")
+        self.refused(TypeError, "max_iterations must be a whole number, not", *args, max_iterations=[3])
 
     def test_invalid_problem_names_the_defect(self):
         # two triangles sharing an edge the same way round: not an orientable surface
