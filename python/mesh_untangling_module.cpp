@@ -479,6 +479,8 @@ struct Python_mesh
   std::string kind;
   py::object vertices, elements, rest = py::none(), rest_elements = py::none(), fixed = py::none();
   py::dict point_fields, cell_fields;   ///< .vtk: name -> one value per vertex or element
+  py::object welded_vertex_of_file_vertex = py::none();   ///< OBJ seams as duplicated v, welded
+  std::string welding_note;
 };
 
 /// int64 for the integer fields, float64 for the others
@@ -498,14 +500,33 @@ py::dict fields_dict(const IO::VTK_fields& fields)
   return out;
 }
 
-Python_mesh read_file(const std::string& path)
+/// weld='auto', 'off' or a distance (read_OBJ()'s OBJ_welding)
+IO::OBJ_welding welding_of(const py::handle& weld)
+{
+  IO::OBJ_welding welding;
+  if(py::isinstance<py::str>(weld)) {
+    const std::string text = py::str(weld);
+    if(text == "off") welding.mode = IO::OBJ_welding::NEVER;
+    else if(text != "auto") throw py::value_error("weld must be 'auto', 'off' or a distance, not '" + text + "'");
+    return welding;
+  }
+  const double tolerance = number<double>(weld, "weld", "'auto', 'off' or a distance");
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw py::value_error("weld must be 'auto', 'off' or a distance, 0 or more, not " + std::string(py::repr(weld)));
+  welding.mode = IO::OBJ_welding::ALWAYS;
+  welding.tolerance = tolerance;
+  return welding;
+}
+
+Python_mesh read_file(const std::string& path, const py::handle& weld)
 {
   Mesh_file mesh;
   IO::VTK_fields cell_fields, point_fields;
+  const IO::OBJ_welding welding = welding_of(weld);
   {
     py::gil_scoped_release release;
     mesh = IO::internal::lowercase_extension(path) == ".vtk" ? IO::read_VTK(path, &cell_fields, &point_fields)
-                                                             : IO::read_mesh_file(path);
+                                                             : IO::read_mesh_file(path, welding);
   }
   Python_mesh m;
   m.point_fields = fields_dict(point_fields);
@@ -526,6 +547,8 @@ Python_mesh read_file(const std::string& path)
   }
   if(!mesh.rest.empty()) m.rest = points_of(mesh.rest, columns(mesh.rest_dimension));
   if(mesh.has_fixed) m.fixed = ids_vector(mesh.fixed);
+  if(mesh.has_welded_vertices()) m.welded_vertex_of_file_vertex = ids_vector(mesh.welded_vertex_of_file_vertex);
+  m.welding_note = mesh.welding_note;
   return m;
 }
 
@@ -560,19 +583,12 @@ void write_file(const std::string& path, const py::handle& vertices, const py::h
       if(flags[v]) mesh.fixed.push_back(v);
     mesh.has_fixed = true;
   }
-  const bool vtk = IO::internal::lowercase_extension(path) == ".vtk";
-  if(!vtk && (!point_fields.is_none() || !cell_fields.is_none()))
+  if(IO::internal::lowercase_extension(path) != ".vtk" && (!point_fields.is_none() || !cell_fields.is_none()))
     throw py::value_error(path + ": fields are written to .vtk files only");
   const IO::VTK_fields cells = fields_of(cell_fields, mesh.simplices.size() + mesh.cells.size(), "cell");
   const IO::VTK_fields points = fields_of(point_fields, mesh.map.size(), "point");
-  // OBJ keeps the domain in v and the map in vt: a map alone is its own domain
-  if(IO::internal::lowercase_extension(path) == ".obj" && mesh.rest.empty()) {
-    mesh.rest = mesh.map;
-    mesh.rest_dimension = mesh.map_dimension;
-  }
   py::gil_scoped_release release;
-  if(vtk) IO::write_VTK(path, mesh, cells, points);
-  else IO::write_mesh_file(path, mesh);
+  write_mesh_file_with_fields(path, mesh, cells, points);
 }
 
 Points project_on_best_fit_plane(const py::handle& vertices, const py::handle& triangles)
@@ -740,6 +756,10 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .def_readonly("point_fields", &Python_mesh::point_fields, ".vtk: the point scalars of one component but "
                                                               "'fixed', by name (int64 or float64); else empty")
     .def_readonly("cell_fields", &Python_mesh::cell_fields, ".vtk: the cell scalars of one component, by name")
+    .def_readonly("welded_vertex_of_file_vertex", &Python_mesh::welded_vertex_of_file_vertex,
+                  "OBJ with seams as duplicated v: for each v line, the id of the vertex it was welded into; else None")
+    .def_readonly("welding_note", &Python_mesh::welding_note,
+                  "OBJ: why vertices at one point were read as written rather than welded; else ''")
     .def("__repr__", [](const Python_mesh& mesh) {
       return "<Mesh " + std::to_string(py::len(mesh.elements)) + " " + mesh.kind + ", " +
              std::to_string(py::len(mesh.vertices)) + " vertices" + (mesh.rest.is_none() ? "" : ", with rest") +
@@ -754,7 +774,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
-  m.def("_read", &read_file, py::arg("path"));
+  m.def("_read", &read_file, py::arg("path"), py::arg("weld"));
   m.def("_write", &write_file, py::arg("path"), py::arg("vertices"), py::arg("elements"), py::kw_only(), py::arg("rest"),
         py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"), py::arg("point_fields"), py::arg("cell_fields"));
   m.def("_project_on_best_fit_plane", &project_on_best_fit_plane, py::arg("vertices"), py::arg("triangles"));

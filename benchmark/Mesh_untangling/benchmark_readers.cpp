@@ -55,10 +55,14 @@ double seconds_to_read(const std::string& path, int repeat)
 
 int main(int argc, char** argv)
 {
-  const std::size_t n = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 300;
+  const long long n = argc > 1 ? std::atoll(argv[1]) : 300;
   const int repeat = argc > 2 ? std::atoi(argv[2]) : 3;
   const std::string dir = argc > 3 ? argv[3] : ".";
-  IO::Mesh_file mesh = Mesh_untangling_tools::make_square_grid(n);
+  if(argc > 4 || n < 1 || n > 20000 || repeat < 1) {
+    std::fprintf(stderr, "usage: benchmark_readers [N = 300, 1 to 20000] [REPEAT = 3, 1 or more] [DIR = .]\n");
+    return 2;
+  }
+  IO::Mesh_file mesh = Mesh_untangling_tools::make_square_grid(std::size_t(n));
   for(std::size_t v = 0; v < mesh.map.size(); ++v) {
     mesh.map[v][0] += 0.1 * std::sin(0.7 * double(v));
     mesh.map[v][2] = 0.3 * std::cos(1.3 * double(v));
@@ -68,17 +72,21 @@ int main(int argc, char** argv)
   for(auto& p : obj.map) p[2] = 0;
   obj.map_dimension = 2;
   std::printf("%zu vertices, %zu triangles, best of %d reads\n", mesh.map.size(), mesh.simplices.size(), repeat);
-  std::printf("%-7s %10s %12s %14s %10s\n", "format", "MB", "numbers", "numbers/s", "MB/s");
-  for(const char* ext : {".off", ".mesh", ".vtk", ".obj", ".input"}) {
-    const std::string path = dir + "/benchmark_readers" + ext;
-    IO::Mesh_file out = (std::string(ext) == ".obj" || std::string(ext) == ".input") ? obj : mesh;
-    if(std::string(ext) != ".obj" && std::string(ext) != ".input") { out.rest.clear(); out.rest_dimension = 0; }
+  std::printf("%-12s %10s %12s %14s %10s\n", "format", "MB", "numbers", "numbers/s", "MB/s");
+  IO::Mesh_file surface = obj;       // OBJ of a surface in 3D: the reader looks for vertices to weld
+  surface.rest = mesh.map;
+  surface.rest_dimension = 3;
+  for(const std::string name : {".off", ".mesh", ".vtk", ".obj", ".input", "-surface.obj"}) {
+    const std::string path = dir + "/benchmark_readers" + name;
+    const std::string ext = IO::internal::lowercase_extension(path);
+    IO::Mesh_file out = name == "-surface.obj" ? surface : ext == ".obj" || ext == ".input" ? obj : mesh;
+    if(ext != ".obj" && ext != ".input") { out.rest.clear(); out.rest_dimension = 0; }
     IO::write_mesh_file(path, out);
     const std::size_t numbers = count_tokens(path);
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const double megabytes = double(in.tellg()) / 1e6;
     const double seconds = seconds_to_read(path, repeat);
-    std::printf("%-7s %10.1f %12zu %14.3g %10.1f\n", ext, megabytes, numbers, double(numbers) / seconds,
+    std::printf("%-12s %10.1f %12zu %14.3g %10.1f\n", name.c_str(), megabytes, numbers, double(numbers) / seconds,
                 megabytes / seconds);
     std::remove(path.c_str());
   }

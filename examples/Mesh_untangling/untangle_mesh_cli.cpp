@@ -53,6 +53,7 @@ struct Arguments
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
   std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
+  std::string weld = "auto";    // OBJ vertices at one point: auto, off or a distance
   bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
@@ -207,11 +208,25 @@ std::string first_element_difference(const Arguments& args, const Mesh_file& res
          ": the rest must have the input's elements, in the same order";
 }
 
+/// How OBJ files are read: --weld auto, off or a distance.
+IO::OBJ_welding welding_of(const Arguments& args)
+{
+  IO::OBJ_welding welding;
+  if(args.weld == "off") welding.mode = IO::OBJ_welding::NEVER;
+  else if(args.weld != "auto") {
+    welding.mode = IO::OBJ_welding::ALWAYS;
+    welding.tolerance = std::strtod(args.weld.c_str(), nullptr);   // (checked by the option's validator)
+  }
+  return welding;
+}
+
 /// The map to untangle, with its rest geometry, as the file formats give it.
 Mesh_file read_problem(const Arguments& args)
 {
-  Mesh_file mesh = IO::read_mesh_file(args.input);
   const std::string ext = lowercase_extension(args.input);
+  if(args.weld != "auto" && ext != ".obj")
+    throw Usage_error("--weld " + args.weld + ": welding applies to OBJ input, and " + args.input + " is not one");
+  Mesh_file mesh = IO::read_mesh_file(args.input, welding_of(args));
   if(args.init == "project") {
     if(!args.rest.empty()) throw Usage_error("--init project makes the surface its own rest: do not give --rest");
     project_surface_on_best_fit_plane(mesh);
@@ -222,7 +237,7 @@ Mesh_file read_problem(const Arguments& args)
   if(mesh.simplex_size == 0 && mesh.cell_size == 0)
     throw Usage_error(args.input + ": no triangle, tetrahedron, quadrilateral or hexahedron");
   if(!args.rest.empty()) {
-    Mesh_file rest = IO::read_mesh_file(args.rest);
+    Mesh_file rest = IO::read_mesh_file(args.rest, welding_of(args));
     const bool rest_in_map = rest.rest.empty();       // OFF, VTK, MEDIT: one geometry
     const auto& points = rest_in_map ? rest.map : rest.rest;
     if(points.size() != mesh.map.size())
@@ -239,12 +254,23 @@ Mesh_file read_problem(const Arguments& args)
   return mesh;
 }
 
+/// The ids of a --fixed file name the input's vertices as written: those
+/// of an OBJ whose vertices were welded (seams as duplicated v) are
+/// renumbered as welded.
+std::vector<std::size_t> read_fixed_ids(const std::string& path, const Mesh_file& mesh, std::size_t n)
+{
+  if(!mesh.has_welded_vertices()) return IO::read_handles(path, n);
+  std::vector<std::size_t> ids = IO::read_handles(path, mesh.file_vertices.size());
+  for(std::size_t& v : ids) v = mesh.welded_vertex_of_file_vertex[v];
+  return ids;
+}
+
 std::vector<bool> fixed_vertices(const Arguments& args, Mesh_file& mesh, std::string& source)
 {
   std::vector<bool> fixed(mesh.map.size(), false);
   std::vector<std::size_t> ids;
   if(!args.fixed.empty()) {
-    ids = IO::read_handles(args.fixed, mesh.map.size());
+    ids = read_fixed_ids(args.fixed, mesh, mesh.map.size());
     source = args.fixed;
   } else if(args.fix_boundary) {
     fixed = boundary_vertices(mesh);
@@ -293,29 +319,10 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
     throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk or .mesh)");
 }
 
-/// What is written: OBJ keeps the domain in v and the map in vt.
-Mesh_file output_content(const Mesh_file& mesh, const std::string& output)
-{
-  Mesh_file out = mesh;
-  if(lowercase_extension(output) == ".obj" && out.rest.empty()) {
-    out.rest = out.map;
-    out.rest_dimension = out.map_dimension;
-  }
-  return out;
-}
-
-/// Writes `mesh` to `path` as output_content(), with the fields when the format is VTK.
-void write_with_fields(const std::string& path, const Mesh_file& mesh, const IO::VTK_fields& cells,
-                       const IO::VTK_fields& points)
-{
-  if(lowercase_extension(path) == ".vtk") IO::write_VTK(path, mesh, cells, points);
-  else IO::write_mesh_file(path, output_content(mesh, path));
-}
-
 /// The map as it reads back from the written file.
-Mesh_file as_written(const Mesh_file& mesh, const std::string& output)
+Mesh_file as_written(const Arguments& args, const Mesh_file& mesh, const std::string& output)
 {
-  Mesh_file written = IO::read_mesh_file(output);
+  Mesh_file written = IO::read_mesh_file(output, welding_of(args));
   Mesh_file checked = mesh;
   checked.map = written.map;
   return checked;
@@ -360,6 +367,27 @@ nlohmann::ordered_json blocking_defects(const Mesh_file& mesh, const std::vector
   return b;
 }
 
+/// What the OBJ reader did with vertices at one point: welded them (seams
+/// written as duplicated v), or why it read them as written.
+void add_welding(nlohmann::ordered_json& j, const Mesh_file& mesh)
+{
+  if(mesh.has_welded_vertices())
+    j["welding"] = {{"file_vertices", mesh.file_vertices.size()}, {"welded_vertices", mesh.rest.size()},
+                    {"written_back", "as duplicated v"}};
+  else if(!mesh.welding_note.empty())
+    j["welding"] = {{"not_welded", mesh.welding_note}};
+}
+
+void print_welding(const Arguments& args, const Mesh_file& mesh)
+{
+  if(args.quiet) return;
+  if(mesh.has_welded_vertices())
+    std::fprintf(stderr, "%s: %zu vertices welded into %zu (seams as duplicated v; written back so)\n",
+                 args.input.c_str(), mesh.file_vertices.size(), mesh.rest.size());
+  else if(!mesh.welding_note.empty())
+    std::fprintf(stderr, "%s: note: %s\n", args.input.c_str(), mesh.welding_note.c_str());
+}
+
 void write_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
                   const Mesh_file& mesh, const std::vector<bool>& is_fixed, const MU::Untangling_result& r,
                   const Run_record& run_record,
@@ -371,6 +399,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["targets"] = mesh.rest.empty() || args.targets == "regular" ? "regular simplices" : "rest";
   j["output"] = args.output;
   j["fixed"] = fixed_source;
+  add_welding(j, mesh);
   j["dimension"] = element_dimension(mesh);
   j["element_type"] = element_kind(mesh);
   j["vertices"] = r.number_of_vertices;
@@ -608,12 +637,14 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   // them all, so that a failure on any (a full disk) leaves every older
   // file as it was.
   if(!args.phantoms.empty())
-    write_for(args.phantoms, [&] { write_with_fields(to.phantoms, phantoms->mesh, phantoms->cells, phantoms->points); });
+    write_for(args.phantoms, [&] {
+      write_mesh_file_with_fields(to.phantoms, phantoms->mesh, phantoms->cells, phantoms->points);
+    });
   write_for(args.output, [&] {
-    write_with_fields(to.output, mesh, fields ? fields->cells : IO::VTK_fields(),
-                      fields ? fields->points : IO::VTK_fields());
+    write_mesh_file_with_fields(to.output, mesh, fields ? fields->cells : IO::VTK_fields(),
+                                fields ? fields->points : IO::VTK_fields());
   });
-  const Mesh_file written = as_written(mesh, to.output);
+  const Mesh_file written = as_written(args, mesh, to.output);
   const Verdict verdict = fields && written.map == mesh.map ? fields->verdict : check_mesh_file(written, run.fixed);
   run.checks.boundary_after = check_boundary_of_mesh_file(written);
   if(!args.svg_input.empty())
@@ -703,6 +734,7 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["output"] = args.output;
   j["fixed"] = fixed_source;
   j["element_type"] = "triangles (seamless parameterization of a surface)";
+  add_welding(j, mesh);
   j["surface_vertices"] = mesh.rest.size();
   j["wedges"] = r.number_of_vertices;
   j["elements"] = r.number_of_elements;
@@ -768,7 +800,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   run.fixed.assign(mesh.rest.size(), false);
   run.fixed_source = "none (cones are, with --seams keep-translations)";
   if(!args.fixed.empty()) {
-    for(std::size_t v : IO::read_handles(args.fixed, mesh.rest.size())) run.fixed[v] = true;
+    for(std::size_t v : read_fixed_ids(args.fixed, mesh, mesh.rest.size())) run.fixed[v] = true;
     run.fixed_source = args.fixed;
   } else if(args.fix_boundary) {
     run.fixed = boundary_vertices(mesh);
@@ -796,7 +828,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   display.reset();
 
   write_for(args.output, [&] { IO::write_mesh_file(to.output, mesh); });
-  Mesh_file written = IO::read_mesh_file(to.output);   // the verdict on the coordinates as written
+  Mesh_file written = IO::read_mesh_file(to.output, welding_of(args));   // the verdict on the coordinates as written
   const Verdict verdict = check_mesh_file(written, run.fixed);
   const Seam_summary seams = compare_seams(given, written);
   const Grid_singularities grid_after = integer_grid_singularities(written);
@@ -848,6 +880,7 @@ int run(const Arguments& args)
     throw Usage_error("--fixed and --fix-boundary exclude each other");
 
   Mesh_file mesh = read_problem(args);
+  print_welding(args, mesh);
   if(mesh.has_corner_map()) return run_seamless(args, mesh);
   if(args.seams != "keep-translations")
     throw Usage_error("--seams " + args.seams + ": " + args.input + " has no seams (an OBJ whose vt differ at a vertex)");
@@ -913,6 +946,17 @@ const CLI::Validator fraction_from_0_to_1(
   },
   "0 <= NUMBER <= 1");
 
+const CLI::Validator weld_option(
+  [](std::string& text) {
+    if(text == "auto" || text == "off") return std::string();
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    const bool number = end != text.c_str() && *end == '\0' && std::isfinite(value);
+    return number && value >= 0 ? std::string()
+                                : "must be 'auto', 'off' or a distance, 0 or more, not '" + text + "'";
+  },
+  "auto|off|DISTANCE");
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -965,6 +1009,11 @@ int main(int argc, char** argv)
                  "the rotation of every seam transition, and its translation ('keep-translations', the default; cones "
                  "stay) or not ('free-translations')")
     ->check(CLI::IsMember({"keep-translations", "free-translations"}));
+  app.add_option("--weld", args.weld, "OBJ vertices at one point (seams written as duplicated v, one per chart): "
+                 "'auto' welds equal points of a textured triangle surface in 3D when its welded seams are "
+                 "transitions (the default), 'off' never, a distance D welds points D apart or closer; the result "
+                 "is written with the input's vertices, and --fixed ids name them")
+    ->check(weld_option);
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");

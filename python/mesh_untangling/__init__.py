@@ -145,7 +145,7 @@ def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind
                                             fixed=fixed)
 
 
-def read(path):
+def read(path, *, weld="auto"):
     """Reads the mesh file at ``path`` (.obj, .off, .vtk, .mesh, .input) into a Mesh.
 
     ``mesh.vertices`` is the map (OBJ: the vt lines; a file with one geometry:
@@ -158,8 +158,17 @@ def read(path):
     component by name (int64 for integer types, else float64; the fields
     that write() and untangle_mesh write).  Raises ReadError naming the file
     and line.
+
+    ``weld`` (OBJ): seams written as duplicated v (one per chart at the same
+    point, as quad-remeshing tools write them) are welded into one vertex
+    whose corners keep their vt: ``"auto"`` when the copies are equal, the
+    surface is in 3D and the welded seams are transitions (else
+    ``mesh.welding_note`` says why not), ``"off"`` never, a distance: points
+    that close (a weld that merges two corners of a face, or whose seams are
+    no transitions, raises ReadError).  ``mesh.welded_vertex_of_file_vertex``
+    then maps each v line to its vertex.
     """
-    return _core._read(str(path))
+    return _core._read(str(path), weld)
 
 
 def write(path, vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None, point_fields=None,

@@ -111,6 +111,8 @@ class Mesh:
     fixed: Optional[npt.NDArray[np.int64]]
     point_fields: dict[str, npt.NDArray]
     cell_fields: dict[str, npt.NDArray]
+    welded_vertex_of_file_vertex: Optional[npt.NDArray[np.int64]]
+    welding_note: str
 
 Fixed = Union[None, Literal["boundary"], ArrayLike]
 
@@ -127,7 +129,7 @@ def untangle(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLi
 def check_local_invertibility(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None,
                               fixed: Fixed = None, kind: Optional[Kind] = None,
                               rest_elements: Optional[ArrayLike] = None) -> Verdict: ...
-def read(path: Path) -> Mesh: ...
+def read(path: Path, *, weld: Union[Literal["auto", "off"], float] = "auto") -> Mesh: ...
 def write(path: Path, vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None, fixed: Fixed = None,
           kind: Optional[Kind] = None, rest_elements: Optional[ArrayLike] = None,
           point_fields: Optional[Mapping[str, ArrayLike]] = None,

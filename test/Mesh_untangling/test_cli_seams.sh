@@ -6,8 +6,12 @@
 # seam transition kept to 1e-12 and the integer-grid singular vertices down
 # to the cones; with --seams free-translations the seams slide (rotations
 # kept); bad seams and options that do not apply are usage errors.
+# The same torus with its seams written as duplicated v (one per chart, as
+# quad-remeshing tools write them) is welded, untangled to the same uv and
+# written back with its own vertices; --fixed names them; --weld says how.
 # usage: test_cli_seams.sh UNTANGLE_MESH MAKE_TANGLED_MESH
 set -u
+to_duplicated_vertices="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/obj_seams_as_duplicated_vertices.py"
 . "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_seams "$@"
 
 json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
@@ -36,6 +40,48 @@ for shape in torus:10:0 seamcube:6:8 pillow:6:4; do
     [ "$(json "$name.json" integer_grid_singular_vertices_after)" = "$cones" ]
   check "$name: pictures with seams" grep -q 'class="seam"' "$name.svg"
 done
+
+# seams as duplicated v: welded, the same uv as with shared v, written back with the file's vertices
+python3 "$to_duplicated_vertices" torus.obj torus-dup.obj
+"$UNTANGLE" torus-dup.obj -o torus-dup-out.obj --report torus-dup.json 2> torus-dup.err
+code=$?
+check "duplicated v: exit 0 (code $code)" [ "$code" = 0 ]
+check "duplicated v: locally invertible" [ "$(json torus-dup.json locally_invertible)" = True ]
+check "duplicated v: welded, said so" grep -q 'torus-dup.obj: 121 vertices welded into 100' torus-dup.err
+check "duplicated v: the report says so" \
+  [ "$(json torus-dup.json welding)" = "{'file_vertices': 121, 'welded_vertices': 100, 'written_back': 'as duplicated v'}" ]
+check "duplicated v: same layout (the file's own v)" same_layout torus-dup.obj torus-dup-out.obj
+check "duplicated v: the same uv as with shared v" [ "$(grep '^vt ' torus-out.obj)" = "$(grep '^vt ' torus-dup-out.obj)" ]
+check "duplicated v: only the cones are singular" [ "$(json torus-dup.json integer_grid_singular_vertices_after)" = 0 ]
+# --fixed names the file's vertices: file vertex 7 (0-based) keeps its vt (line 8 of the vt lines)
+echo 7 > fixed.txt
+"$UNTANGLE" torus-dup.obj -o torus-fixed.obj --fixed fixed.txt --report torus-fixed.json --quiet
+check "duplicated v, --fixed: exit 0" [ $? = 0 ]
+check "duplicated v, --fixed: one wedge fixed per copy" [ "$(json torus-fixed.json fixed_wedges)" -ge 1 ]
+check "duplicated v, --fixed: its vt kept" \
+  [ "$(grep '^vt ' torus-dup.obj | sed -n 8p)" = "$(grep '^vt ' torus-fixed.obj | sed -n 8p)" ]
+echo 121 > out-of-range.txt
+"$UNTANGLE" torus-dup.obj -o torus-oor.obj --fixed out-of-range.txt --quiet 2> oor.err
+check "duplicated v, --fixed 121: exit 2" [ $? = 2 ]
+check "duplicated v, --fixed 121: out of the file's range" grep -q '121' oor.err
+# --weld off: the file as written (charts with free boundaries, no seam)
+"$UNTANGLE" torus-dup.obj -o torus-off.obj --weld off --report torus-off.json --quiet
+check "--weld off: not welded" python3 -c "import json,sys; sys.exit('welding' in json.load(open('torus-off.json')))"
+check "--weld off: no seam" python3 -c "import json,sys; sys.exit('seams' in json.load(open('torus-off.json')))"
+# copies whose two sides are no transition: read as written, and said why; welding asked for: exit 2
+sed '0,/^vt 10 5$/s//vt 10.25 5/' torus-dup.obj > cut.obj
+"$UNTANGLE" cut.obj -o cut-out.obj --report cut.json 2> cut.err
+check "no transition: said why it is not welded" grep -q 'were not welded: welded, the faces are no seamless' cut.err
+"$UNTANGLE" cut.obj -o cut-out2.obj --weld 0 --quiet 2> cut2.err
+check "no transition, --weld 0: exit 2" [ $? = 2 ]
+check "no transition, --weld 0: the seam edge named" grep -q 'cut.obj:[0-9]*: seam edge (' cut2.err
+"$UNTANGLE" torus-dup.obj -o x.obj --weld 0.5x --quiet 2> weld-bad.err
+check "--weld 0.5x: exit 2" [ $? = 2 ]
+check "--weld 0.5x: what is wanted" grep -q "must be 'auto', 'off' or a distance" weld-bad.err
+"$MAKE" square 4 0.3 1 square.vtk > /dev/null
+"$UNTANGLE" square.vtk -o x.vtk --weld 0 --quiet 2> weld-vtk.err
+check "--weld on a .vtk: exit 2" [ $? = 2 ]
+check "--weld on a .vtk: why" grep -q 'welding applies to OBJ input' weld-vtk.err
 
 # lbfgs gets there too
 "$UNTANGLE" seamcube.obj -o cube-lbfgs.obj --solver lbfgs --quiet

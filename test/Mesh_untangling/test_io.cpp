@@ -980,6 +980,103 @@ void make_temp_dir()
 
 } // namespace
 
+// Seams written as duplicated v (one per chart at the same point, as
+// quad-remeshing tools write them) are welded into one vertex whose corners
+// keep their vt: the mesh of the shared-v layout, written back as read.
+void test_obj_duplicated_vertices()
+{
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\n";
+  const std::string textures = "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n";
+  // face 2's copies of vertices 2 and 3 are their images by the translation (2, 0): a seam
+  const std::string duplicated = vertices + "v 1 0 0\nv 0 1 0\n" + textures + "vt 3 0\nvt 2 1\n"
+                                 "f 1/1 2/2 3/3\nf 5/5 4/4 6/6\n";
+  const std::string path = write_text("duplicated.obj", duplicated);
+  const Mesh_file welded = IO::read_OBJ(path);
+  CHECK(welded.has_welded_vertices() && welded.has_corner_map() && welded.welding_note.empty());
+  CHECK(welded.rest.size() == 4 && welded.rest_dimension == 3 && welded.file_vertices.size() == 6);
+  CHECK((welded.welded_vertex_of_file_vertex == std::vector<std::size_t>{0, 1, 2, 3, 1, 2}));
+  CHECK((welded.simplices[1] == std::array<std::size_t, 4>{1, 3, 2, 0}));
+  CHECK((welded.simplex_file_vertices[1] == std::array<std::size_t, 4>{4, 3, 5, 0}));
+  // the same mesh as the shared-v layout gives
+  const Mesh_file shared = IO::read_OBJ(write_text("shared.obj", vertices + textures + "vt 3 0\nvt 1 1\nvt 2 1\n"
+                                                   "f 1/1 2/2 3/3\nf 2/5 4/6 3/7\n"));
+  CHECK(shared.simplices == welded.simplices && shared.rest == welded.rest && !shared.has_welded_vertices());
+  // written back in the layout read, text for text
+  IO::write_OBJ(temp_path("duplicated-out.obj"), welded);
+  CHECK(read_text(temp_path("duplicated-out.obj")) == duplicated);
+  // --fixed ids etc. name file vertices; never welding reads six vertices
+  const Mesh_file never = IO::read_OBJ(path, {IO::OBJ_welding::NEVER, 0.});
+  CHECK(!never.has_welded_vertices() && !never.has_corner_map() && never.map.size() == 6);
+
+  // a copy with the same vt on both sides: welded, the map per vertex, written back the same
+  const std::string continuous = vertices + "v 1 0 0\nv 0 1 0\n" + textures + "vt 1 0\nvt 0 1\n"
+                                 "f 1/1 2/2 3/3\nf 5/5 4/4 6/6\n";
+  const Mesh_file joined = IO::read_OBJ(write_text("continuous.obj", continuous));
+  CHECK(joined.has_welded_vertices() && !joined.has_corner_map() && joined.map.size() == 4);
+  IO::write_OBJ(temp_path("continuous-out.obj"), joined);
+  CHECK(read_text(temp_path("continuous-out.obj")) == continuous);
+
+  // a planar domain with coincident vertices is a slit: welded only when asked
+  std::string planar = duplicated;
+  planar.replace(planar.find("1 1 0.5"), 7, "1 1 0");
+  const std::string planar_path = write_text("slit.obj", planar);
+  CHECK(!IO::read_OBJ(planar_path).has_welded_vertices());
+  CHECK(IO::read_OBJ(planar_path, {IO::OBJ_welding::ALWAYS, 0.}).has_welded_vertices());
+
+  // copies whose two sides are no transition: read as written, and said why;
+  // a weld asked for is an error naming the line
+  std::string cut = duplicated;
+  cut.replace(cut.find("vt 2 1"), 6, "vt 2.5 1");
+  const std::string cut_path = write_text("cut.obj", cut);
+  const Mesh_file not_welded = IO::read_OBJ(cut_path);
+  CHECK(!not_welded.has_welded_vertices() && not_welded.map.size() == 6);
+  CHECK(not_welded.welding_note.find("2 vertices share their point with another one and were not welded") == 0);
+  CHECK(not_welded.welding_note.find("line 13") != std::string::npos);
+  const Reader weld_exactly = [](const std::string& p) { IO::read_OBJ(p, {IO::OBJ_welding::ALWAYS, 0.}); };
+  CHECK_READ_ERROR(weld_exactly, "cut.obj", cut, 13, "seam edge (1, 2) between faces 0 and 1");
+
+  // copies 1e-9 apart: welded within a tolerance only, written back with their own points
+  std::string near = duplicated;
+  near.replace(near.find("v 1 0 0\nv 0 1 0\nvt"), 16, "v 1.000000001 0 0\nv 0 1.000000001 0\n");
+  const std::string near_path = write_text("near.obj", near);
+  const Mesh_file apart = IO::read_OBJ(near_path);
+  CHECK(!apart.has_welded_vertices() && apart.welding_note.empty());
+  const Mesh_file close = IO::read_OBJ(near_path, {IO::OBJ_welding::ALWAYS, 1e-6});
+  CHECK(close.has_welded_vertices() && close.rest.size() == 4 && close.rest[1] == (std::array<double, 3>{1, 0, 0}));
+  IO::write_OBJ(temp_path("near-out.obj"), close);
+  CHECK(read_text(temp_path("near-out.obj")) == near);
+
+  // a vt shared by two wedges (vertex 2 is the centre of the seam's rotation by 90 degrees,
+  // written once): split, the second wedge's copy after the file's vt; what is written reads back the same
+  const std::string shared_vt = vertices + "v 1 0 0\nv 0 1 0\n" + textures + "vt 0 -1\nf 1/1 2/2 3/3\nf 5/2 4/4 6/5\n";
+  const Mesh_file split = IO::read_OBJ(write_text("shared-vt.obj", shared_vt));
+  CHECK(split.has_welded_vertices() && split.corner_map.size() == 6 && split.corner_map[5] == split.corner_map[1]);
+  CHECK((split.simplex_corner_map[1] == std::array<std::size_t, 4>{5, 3, 4, 0}));
+  IO::write_OBJ(temp_path("shared-vt-out.obj"), split);
+  const Mesh_file split_again = IO::read_OBJ(temp_path("shared-vt-out.obj"));
+  CHECK(split_again.corner_map == split.corner_map && split_again.simplex_corner_map == split.simplex_corner_map);
+
+  // without vt (fuzz_obj found the writer reading a map that is not there)
+  const std::string untextured = "v 0 0 1\nv 1 0 0\nv 0 1 0\nv 1 1 1\nv 1 0 0\nf 1 2 3\nf 5 4 3\n";
+  const Mesh_file bare = IO::read_OBJ(write_text("bare.obj", untextured), {IO::OBJ_welding::ALWAYS, 0.});
+  CHECK(bare.has_welded_vertices() && bare.rest.size() == 4 && bare.map.empty());
+  IO::write_OBJ(temp_path("bare-out.obj"), bare);
+  CHECK(read_text(temp_path("bare-out.obj")) == untextured);
+
+  // a tolerance that merges two corners of a face; quadrilaterals
+  const Reader weld_far = [](const std::string& p) { IO::read_OBJ(p, {IO::OBJ_welding::ALWAYS, 1.5}); };
+  CHECK_READ_ERROR(weld_far, "far.obj", duplicated, 13,
+                   "face 1: its vertices 1 and 2 are welded into one (within the tolerance 1.5)");
+  CHECK_READ_ERROR(weld_exactly, "quads.obj", vertices + "v 1 0 0\n" + textures + "f 1/1 2/2 4/4 3/3\nf 5/2 2/2 4/4 3/3\n",
+                   10, "welding vertices applies to triangles");
+
+  // a layout that does not match its triangles is not written
+  Mesh_file broken = welded;
+  broken.simplex_file_vertices[0][0] = 4;
+  CHECK_WRITE_ERROR(IO::write_OBJ(temp_path("broken.obj"), broken),
+                    "the file vertices of the welded layout do not match the mesh: corner 0 of triangle 0");
+}
+
 int main(int argc, char** argv)
 {
   make_temp_dir();
@@ -992,6 +1089,7 @@ int main(int argc, char** argv)
   test_vtk_fields_read_back();
   test_medit_errors();
   test_obj_errors();
+  test_obj_duplicated_vertices();
   test_medit_value_messages();
   test_format_details();
   test_handles_and_common_errors();

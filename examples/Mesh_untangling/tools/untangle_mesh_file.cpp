@@ -4,6 +4,7 @@
 
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/cell_invertibility.h>
+#include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
@@ -687,6 +688,18 @@ void project_surface_on_best_fit_plane(Mesh_file& mesh)
   mesh.map.assign(uv.size(), {0., 0., 0.});
   for(std::size_t v = 0; v < uv.size(); ++v) mesh.map[v] = {uv[v][0], uv[v][1], 0.};
   mesh.map_dimension = 2;
+}
+
+void write_mesh_file_with_fields(const std::string& path, const Mesh_file& mesh, const MU::IO::VTK_fields& cells,
+                                 const MU::IO::VTK_fields& points)
+{
+  const std::string extension = MU::IO::internal::lowercase_extension(path);
+  if(extension == ".vtk") return MU::IO::write_VTK(path, mesh, cells, points);
+  if(extension != ".obj" || !mesh.rest.empty()) return MU::IO::write_mesh_file(path, mesh);
+  Mesh_file own_domain = mesh;
+  own_domain.rest = mesh.map;
+  own_domain.rest_dimension = mesh.map_dimension;
+  MU::IO::write_mesh_file(path, own_domain);
 }
 
 Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed)

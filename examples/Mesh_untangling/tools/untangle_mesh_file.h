@@ -105,6 +105,15 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
 /// Throws Invalid_problem if the mesh has no triangles.
 void project_surface_on_best_fit_plane(Mesh_file& mesh);
 
+/// Writes `mesh` to `path` in the format of its extension, with `cells` and
+/// `points` when it is .vtk (the other formats hold no field).  An OBJ keeps the
+/// domain in `v` and the map in `vt`: a mesh with a map alone is written as
+/// its own domain, so that it reads back as a map.
+/// Throws CGAL::Mesh_untangling::IO::Write_error as the writers do.
+void write_mesh_file_with_fields(const std::string& path, const Mesh_file& mesh,
+                                 const CGAL::Mesh_untangling::IO::VTK_fields& cells = {},
+                                 const CGAL::Mesh_untangling::IO::VTK_fields& points = {});
+
 /// What the seams of a per-corner map are, and how those of `after` (the
 /// same surface) differ from those of `before`: the largest change of a
 /// translation, whether every rotation is the same, and how far apart the

@@ -105,6 +105,9 @@ inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
   if(!same_bits(a.fixed, b.fixed)) mismatch("the fixed vertices");
   if(!same_bits(a.corner_map, b.corner_map)) mismatch("the per-corner map");
   if(!same_bits(a.simplex_corner_map, b.simplex_corner_map)) mismatch("the corners' texture coordinates");
+  if(!same_bits(a.file_vertices, b.file_vertices)) mismatch("the file's vertices (welded layout)");
+  if(!same_bits(a.welded_vertex_of_file_vertex, b.welded_vertex_of_file_vertex)) mismatch("the welded vertex ids");
+  if(!same_bits(a.simplex_file_vertices, b.simplex_file_vertices)) mismatch("the corners' file vertices");
 }
 
 /// `read(path)` returns a value comparable by `check(first, second)`;

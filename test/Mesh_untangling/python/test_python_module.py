@@ -232,6 +232,41 @@ class Kinds(unittest.TestCase):
         subprocess.run([CLI, path, "-o", output, "-q"], check=True)
         self.assertTrue(np.array_equal(uv, mu.read(output).vertices))
 
+    def test_seams_as_duplicated_vertices(self):
+        # one v per vt (a seam vertex once per chart): welded into the torus's vertices, the same arrays
+        shared = os.path.join(self.dir.name, "torus.obj")
+        make("torus", 6, 0.5, 1, shared)
+        duplicated = os.path.join(self.dir.name, "torus-dup.obj")
+        with open(shared) as f:
+            lines = f.read().split("\n")
+        v = [l for l in lines if l.startswith("v ")]
+        vt = [l for l in lines if l.startswith("vt ")]
+        faces = [[c.split("/") for c in l.split()[1:]] for l in lines if l.startswith("f ")]
+        vertex_of_vt = {int(t): int(i) for face in faces for i, t in face}
+        with open(duplicated, "w") as f:
+            f.writelines(v[vertex_of_vt[t] - 1] + "\n" for t in range(1, len(vt) + 1))
+            f.writelines(l + "\n" for l in vt)
+            f.writelines("f " + " ".join(f"{t}/{t}" for _, t in face) + "\n" for face in faces)
+        a, b = mu.read(shared), mu.read(duplicated)
+        self.assertIsNone(a.welded_vertex_of_file_vertex)
+        self.assertEqual(len(b.welded_vertex_of_file_vertex), len(vt))
+        self.assertEqual(len(b.rest), len(a.rest))
+        self.assertTrue(np.array_equal(a.vertices, b.vertices))
+        self.assertEqual(b.welding_note, "")
+        off = mu.read(duplicated, weld="off")
+        self.assertIsNone(off.welded_vertex_of_file_vertex)
+        self.assertIsNone(off.rest_elements)
+        self.assertEqual(len(off.rest), len(vt))
+        self.assertIsNotNone(mu.read(duplicated, weld=0.0).welded_vertex_of_file_vertex)
+        with self.assertRaisesRegex(ValueError, "weld must be 'auto', 'off' or a distance"):
+            mu.read(duplicated, weld="yes")
+        with self.assertRaisesRegex(ValueError, "0 or more"):
+            mu.read(duplicated, weld=-1.0)
+        with self.assertRaisesRegex(TypeError, "weld must be"):
+            mu.read(duplicated, weld=[1])
+        with self.assertRaisesRegex(mu.ReadError, r"torus-dup.obj:\d+: face \d+: its vertices \d+ and \d+ are welded"):
+            mu.read(duplicated, weld=100.0)
+
     def test_free_boundary_protected_by_phantoms(self):
         vertices, triangles, _ = tangled_square()
         new, result = mu.untangle(vertices, triangles)

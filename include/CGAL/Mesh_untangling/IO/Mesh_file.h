@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +48,21 @@ struct Mesh_file
   std::vector<std::size_t> cell_lines;                ///< as `simplex_lines`, for the cells
   std::vector<std::array<double, 3>> corner_map;      ///< per-corner map (seams): texture coordinates, z = 0
   std::vector<std::array<std::size_t, 4>> simplex_corner_map;  ///< 0-based ids into `corner_map`; 4th entry unused (0)
+
+  /// Seams written as duplicated `v` and welded when read (OBJ_welding):
+  /// the file's own vertices, the vertex each was welded into, and the file
+  /// vertices of every triangle's corners (4th entry unused, 0), so that
+  /// write_OBJ() writes the mesh back in the layout read.  Empty when
+  /// nothing was welded.
+  std::vector<std::array<double, 3>> file_vertices;
+  std::vector<std::size_t> welded_vertex_of_file_vertex;         ///< 0-based, one per file vertex
+  std::vector<std::array<std::size_t, 4>> simplex_file_vertices;  ///< 0-based ids into `file_vertices`
+  /// Why an OBJ file's coincident vertices were read as written rather than
+  /// welded (OBJ_welding::AUTOMATIC); empty otherwise.
+  std::string welding_note;
+
+  /// whether vertices of the file were welded (its seams written as duplicated `v`)
+  bool has_welded_vertices() const { return !simplex_file_vertices.empty(); }
 
   /// whether the map is per corner (a seamless parameterization with seams)
   bool has_corner_map() const { return !simplex_corner_map.empty(); }

@@ -41,13 +41,14 @@ inline std::string unsupported_extension(const std::string& path)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a mesh file, choosing the format from the extension (case-insensitive):
-/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT) or `.input` (Du et al.).
+/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT) or `.input` (Du et al.);
+/// `welding` applies to OBJ files (read_OBJ()).
 /// \throws Read_error if the extension is not one of these, or as the reader does.
-inline Mesh_file read_mesh_file(const std::string& path)
+inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& welding = OBJ_welding())
 {
   const std::string extension = internal::lowercase_extension(path);
   if(extension == ".obj")
-    return read_OBJ(path);
+    return read_OBJ(path, welding);
   if(extension == ".off")
     return read_OFF(path);
   if(extension == ".vtk")

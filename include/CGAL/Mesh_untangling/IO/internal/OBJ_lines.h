@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -204,7 +205,10 @@ inline bool assign_OBJ_texture(const Text_file& file, const OBJ_content& content
 // Seams: every corner keeps its own texture coordinate, and the seams must
 // be transitions of a seamless parameterization (detect_seams, link_wedges:
 // a bad one is named with its face's line).  A texture coordinate shared by
-// corners of two wedges would be written back with one of their uv only.
+// corners of two wedges (the copies of a cone, which its rotation leaves in
+// place, written once) is split: each further wedge gets a copy appended to
+// `corner_map`, so that every wedge's uv can move on its own, and what is
+// written reads back the same.
 inline void build_OBJ_corner_map(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)
 {
   const OBJ_face& first = content.faces.front();
@@ -221,28 +225,28 @@ inline void build_OBJ_corner_map(const Text_file& file, const OBJ_content& conte
     }
   }
   namespace core = CGAL::Mesh_untangling::internal;
+  core::Seams seams;
   try {
-    const core::Seams seams = core::detect_seams(content.positions.size(), triangles, corner_uv);
+    seams = core::detect_seams(content.positions.size(), triangles, corner_uv);
     std::vector<char> cone;
     core::link_wedges(seams, content.positions.size(), {}, cone);
-    std::vector<std::size_t> wedge_of_texture(content.textures.size(), std::size_t(-1));
-    for(std::size_t c = 0; c < 3 * triangles.size(); ++c) {
-      std::size_t& w = wedge_of_texture[content.faces[c / 3].textures[c % 3] - 1];
-      const std::size_t wedge = seams.wedge_of_corner[c];
-      if(w != std::size_t(-1) && w != wedge)
-        file.fail(content.faces[c / 3].line, "vt " + std::to_string(content.faces[c / 3].textures[c % 3]) +
-                                                 " is used by corners of two wedges (of vertices " +
-                                                 std::to_string(seams.vertex_of_wedge[w] + 1) + " and " +
-                                                 std::to_string(seams.vertex_of_wedge[wedge] + 1) +
-                                                 "): each side of a seam needs its own texture coordinates");
-      w = wedge;
-    }
   } catch(const core::Seam_error& e) {
     // (the message's numbers are 0-based; the file's are 1-based: name the line)
     file.fail(content.faces[e.face].line, std::string(e.what()) + " (vertex and face numbers 0-based)");
   }
   mesh.corner_map.reserve(content.textures.size());
   for(const auto& t : content.textures) mesh.corner_map.push_back({t[0], t[1], 0.});
+  std::vector<std::size_t> wedge_of_texture(content.textures.size(), std::size_t(-1));
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> copy_of;   // (texture, wedge) -> its copy
+  for(std::size_t c = 0; c < 3 * triangles.size(); ++c) {
+    std::size_t& t = mesh.simplex_corner_map[c / 3][c % 3];
+    const std::size_t wedge = seams.wedge_of_corner[c];
+    if(wedge_of_texture[t] == std::size_t(-1)) wedge_of_texture[t] = wedge;
+    if(wedge_of_texture[t] == wedge) continue;
+    const auto [at, added] = copy_of.emplace(std::make_pair(t, wedge), mesh.corner_map.size());
+    if(added) mesh.corner_map.push_back(mesh.corner_map[t]);
+    t = at->second;
+  }
 }
 
 inline void build_OBJ_map(const Text_file& file, const OBJ_content& content, Mesh_file& mesh)

@@ -117,6 +117,28 @@ inline void check_faces_only(const std::string& path, const Mesh_file& mesh, con
     throw Write_error(path, std::string(format) + " stores faces only, not hexahedra");
 }
 
+// The layout of welded vertices (OBJ seams as duplicated `v`) must name,
+// at every corner, a file vertex welded into that corner's vertex.
+inline void check_file_vertices(const std::string& path, const Mesh_file& mesh)
+{
+  const auto mismatch = [&path](const std::string& what) {
+    throw Write_error(path, "the file vertices of the welded layout do not match the mesh: " + what);
+  };
+  if(mesh.simplex_size != 3 || !mesh.cells.empty() || mesh.simplex_file_vertices.size() != mesh.simplices.size())
+    mismatch("they need triangles, one list of corners per triangle");
+  if(mesh.welded_vertex_of_file_vertex.size() != mesh.file_vertices.size())
+    mismatch(std::to_string(mesh.file_vertices.size()) + " file vertices, " +
+             std::to_string(mesh.welded_vertex_of_file_vertex.size()) + " welded ids");
+  for(std::size_t w : mesh.welded_vertex_of_file_vertex)
+    if(w >= mesh.number_of_vertices()) mismatch("a file vertex is welded into vertex " + std::to_string(w));
+  for(std::size_t k = 0; k < mesh.simplices.size(); ++k)
+    for(int c = 0; c < 3; ++c) {
+      const std::size_t u = mesh.simplex_file_vertices[k][c];
+      if(u >= mesh.file_vertices.size() || mesh.welded_vertex_of_file_vertex[u] != mesh.simplices[k][c])
+        mismatch("corner " + std::to_string(c) + " of triangle " + std::to_string(k));
+    }
+}
+
 } // namespace internal
 } // namespace IO
 } // namespace Mesh_untangling

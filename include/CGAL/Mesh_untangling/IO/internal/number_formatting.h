@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstddef>
 #include <ostream>
+#include <string>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -21,6 +22,13 @@ inline void write_number(std::ostream& out, double value)
   char buffer[32];
   std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), value);
   out.write(buffer, r.ptr - buffer);
+}
+
+inline std::string number_text(double value)
+{
+  char buffer[32];
+  std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return std::string(buffer, r.ptr);
 }
 
 inline void write_number(std::ostream& out, std::size_t value)
