@@ -888,6 +888,9 @@ int run(const Arguments& args)
     throw Usage_error("--refine splits the edges of simplices; " + args.input + " holds " + element_kind(mesh));
   if(args.refine && args.targets == "regular")
     throw Usage_error("--refine untangles toward the rest's shapes: it does not take --targets regular");
+  if(args.refine && mesh.has_welded_vertices() && lowercase_extension(args.output) == ".obj")
+    throw Usage_error("--refine adds vertices, which " + args.input + "'s own vertices (welded when read) cannot "
+                      "hold when written back: write a .vtk, or read it with --weld off");
   check_output_paths(args);
   Run run;
   run.fixed = fixed_vertices(args, mesh, run.fixed_source);

@@ -83,6 +83,24 @@ check "--weld 0.5x: what is wanted" grep -q "must be 'auto', 'off' or a distance
 check "--weld on a .vtk: exit 2" [ $? = 2 ]
 check "--weld on a .vtk: why" grep -q 'welding applies to OBJ input' weld-vtk.err
 
+# a welded map cannot be refined into its own vertices: exit 2, why (a copy of the first face's first vertex)
+"$MAKE" square 4 0.3 1 square-map.obj > /dev/null
+python3 -c "
+import sys
+lines = open(sys.argv[1]).read().split('\\n')
+count = sum(l.startswith('v ') for l in lines)
+f = next(i for i, l in enumerate(lines) if l.startswith('f '))
+corners = lines[f].split()[1:]
+vertex, _, texture = corners[0].partition('/')
+lines.append(lines[[i for i, l in enumerate(lines) if l.startswith('v ')][int(vertex) - 1]])
+corners[0] = str(count + 1) + ('/' + texture if texture else '')
+lines[f] = 'f ' + ' '.join(corners)
+open(sys.argv[2], 'w').write('\\n'.join(lines) + '\\n')
+" square-map.obj square-copy.obj
+"$UNTANGLE" square-copy.obj -o r.obj --weld 0 --fix-boundary --refine --quiet 2> refine-weld.err
+check "--refine of a welded OBJ into .obj: exit 2" [ $? = 2 ]
+check "--refine of a welded OBJ into .obj: why" grep -q 'write a .vtk, or read it with --weld off' refine-weld.err
+
 # lbfgs gets there too
 "$UNTANGLE" seamcube.obj -o cube-lbfgs.obj --solver lbfgs --quiet
 check "seamcube --solver lbfgs: exit 0" [ $? = 0 ]
