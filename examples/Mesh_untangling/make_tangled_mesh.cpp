@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow N AMPLITUDE SEED OUTPUT
+// make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase N AMPLITUDE SEED OUTPUT
 // Writes a structured mesh of the unit square (2 N^2 triangles, or N^2
 // quadrilaterals) or cube (6 N^3 tetrahedra, or N^3 hexahedra) whose interior vertices are moved at random by up to
 // AMPLITUDE grid cells, boundary fixed.  quadsurface: the quadrilaterals of
@@ -13,10 +13,12 @@
 // what the format cannot hold, NAME-fixed.txt and the rest grid
 // NAME-rest.EXT, so that every format gives the same problem; the command
 // that untangles it is printed.
-// torus, seamcube and pillow are seamless parameterizations of closed
-// surfaces (seamless_generators.h: an N x N grid torus, a cube of N x N
-// cells per face with 8 cones, a pillow with 4 cones), written as an OBJ
-// with seams; AMPLITUDE moves the uv of half of the vertices off the seams.
+// torus, seamcube, pillow and staircase are seamless parameterizations of
+// closed surfaces (seamless_generators.h: an N x N grid torus, a cube of
+// N x N cells per face with 8 cones, a pillow with 4 cones, a staircase
+// polycube of 12 x 12 columns whose heights SEED draws, N x N cells per unit
+// face, hundreds of cones), written as an OBJ with seams; AMPLITUDE moves
+// the uv of half of the vertices off the seams.
 #include "generators.h"
 #include "seamless_generators.h"
 
@@ -96,7 +98,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
 
 int main(int argc, char** argv)
 {
-  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow "
+  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase "
                             "N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }
   const std::string shape = argv[1];
@@ -106,7 +108,7 @@ int main(int argc, char** argv)
   const double amplitude = std::strtod(argv[3], &end);
   const bool amplitude_ok = *end == 0 && amplitude >= 0 && amplitude <= 100;
   const long seed = std::strtol(argv[4], &end, 10);
-  const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow";
+  const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow" || shape == "staircase";
   if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "quadsurface" && shape != "hexcube" &&
       !seamless) || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
     std::cerr << usage << "N in [2, 2000], AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
@@ -119,7 +121,8 @@ int main(int argc, char** argv)
       return 2;
     }
     auto surface = shape == "torus" ? T::make_seamless_torus(n) : shape == "seamcube" ? T::make_seamless_cube(n)
-                                                                                    : T::make_seamless_pillow(n);
+                 : shape == "pillow" ? T::make_seamless_pillow(n)
+                                     : T::make_seamless_staircase(n, static_cast<unsigned>(seed));
     const std::size_t moved = T::tangle_seamless(surface, amplitude, 0.5, static_cast<unsigned>(seed));
     try {
       IO::write_mesh_file(argv[5], surface);

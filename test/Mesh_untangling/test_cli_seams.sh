@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Seamless parameterizations from the command line (issue 25 part 1): an OBJ
-# with seams (torus, cube with 8 cones, pillow with 4) made by
+# with seams (torus, cube with 8 cones, pillow with 4, staircase polycube with 249) made by
 # make_tangled_mesh untangles to exit 0, written back in the same layout
 # (the same v lines, as many vt, faces naming the same v and vt), with every
 # seam transition kept to 1e-12 and the integer-grid singular vertices down
@@ -23,7 +23,7 @@ same_layout() {
 }
 at_most() { python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) <= float(sys.argv[2]) else 1)" "$1" "$2"; }
 
-for shape in torus:10:0 seamcube:6:8 pillow:6:4; do
+for shape in torus:10:0 seamcube:6:8 pillow:6:4 staircase:3:249; do
   IFS=: read -r name n cones <<< "$shape"
   "$MAKE" "$name" "$n" 1.3 5 "$name.obj" > /dev/null
   "$UNTANGLE" "$name.obj" -o "$name-out.obj" --report "$name.json" --svg "$name.svg" --svg-input "$name-in.svg" --quiet

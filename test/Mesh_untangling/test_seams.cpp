@@ -306,6 +306,33 @@ void check_covering_across_seams()
       }
     CHECK(cones == count);
   }
+  // a staircase polycube: every corner whose surface angle is not 2 pi is a
+  // cone, and the transitions prescribe exactly its surface angle
+  {
+    const Mesh_file mesh = tools::make_seamless_staircase(2, 3);
+    const auto layout = seams_of(mesh);
+    std::vector<double> rest_angle(mesh.rest.size(), 0.);
+    for(const auto& t : mesh.simplices)
+      for(int i = 0; i < 3; ++i) {
+        Eigen::Vector3d p, q;
+        for(int c = 0; c < 3; ++c) {
+          p[c] = mesh.rest[t[(i + 1) % 3]][c] - mesh.rest[t[i]][c];
+          q[c] = mesh.rest[t[(i + 2) % 3]][c] - mesh.rest[t[i]][c];
+        }
+        rest_angle[t[i]] += std::atan2(p.cross(q).norm(), p.dot(q));
+      }
+    std::vector<char> cone;
+    const auto links = MU::internal::link_wedges(layout, mesh.rest.size(), rest_angle, cone);
+    std::size_t cones = 0, corners = 0;
+    for(std::size_t v = 0; v < mesh.rest.size(); ++v) corners += std::abs(rest_angle[v] - 2 * pi) > 1e-9;
+    for(std::size_t w = 0; w < links.representative.size(); ++w)
+      if(links.representative[w] == w && cone[layout.vertex_of_wedge[w]]) {
+        ++cones;
+        const double surface = rest_angle[layout.vertex_of_wedge[w]];
+        CHECK_MESSAGE(std::abs(links.angle[w] - surface) < 1e-9, links.angle[w] << " instead of " << surface);
+      }
+    CHECK_MESSAGE(cones == corners && cones > 100, cones << " cones, " << corners << " corners");
+  }
 }
 
 void check_bad_seams()

@@ -4,8 +4,9 @@
 // Seamless parameterizations the project makes itself (issue 25): a torus
 // with a grid parameterization (two seams, identity rotations), a cube with
 // one chart per face (every edge a seam, 90 degree rotations, 8 cones of
-// 3 pi / 2) and a pillow, two squares glued along their boundary and puffed
-// up (4 cones of pi).  Each is an integer-grid map (translations integers,
+// 3 pi / 2), a pillow, two squares glued along their boundary and puffed
+// up (4 cones of pi), and a staircase polycube (a chart per unit face,
+// hundreds of cones).  Each is an integer-grid map (translations integers,
 // cones on integer points), written as an OBJ with per-corner `vt`, and is
 // tangled by moving the uv of vertices that have one wedge only.
 #ifndef MESH_UNTANGLING_TOOLS_SEAMLESS_GENERATORS_H
@@ -13,6 +14,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -132,6 +134,60 @@ inline CGAL::Mesh_untangling::IO::Mesh_file make_seamless_cube(std::size_t n)
       return x;
     };
     p.uv = [f](long i, long j) { return std::array<double, 2>{f.du + double(i), f.dv + double(j)}; };
+    patches.push_back(p);
+  }
+  return seamless_mesh(patches);
+}
+
+/// A staircase polycube: 12 x 12 columns of unit cubes on a square base,
+/// their heights growing at random (from `seed`) with x and y (so that the
+/// surface is a manifold: no two columns meet along an edge only), n x n
+/// cells per unit face.  Every unit face is its own chart, placed in an atlas
+/// at integer offsets: each edge between faces is a seam, with a rotation by a
+/// multiple of 90 degrees where the faces meet at an angle, and every
+/// corner of the polycube is a cone (3 pi / 2 or 5 pi / 2 and others):
+/// hundreds of cones and seams, as the charts of a polycube map have.
+inline CGAL::Mesh_untangling::IO::Mesh_file make_seamless_staircase(std::size_t n, unsigned seed)
+{
+  constexpr long K = 12;
+  const long N = long(n);
+  std::mt19937 random(seed);
+  std::bernoulli_distribution step(0.5);
+  long height[K][K];
+  for(long i = 0; i < K; ++i)
+    for(long j = 0; j < K; ++j)
+      height[i][j] = std::max(i > 0 ? height[i - 1][j] : 1L, j > 0 ? height[i][j - 1] : 1L) + (i + j > 0 && step(random));
+  const auto height_at = [&height](long i, long j) { return i < 0 || j < 0 || i >= K || j >= K ? 0L : height[i][j]; };
+  // the unit faces: origin (lattice of the cubes), axes u, v with u x v the outward normal (as the cube's)
+  struct Face { std::array<long, 3> o, u, v; };
+  std::vector<Face> faces;
+  for(long i = 0; i < K; ++i)
+    for(long j = 0; j < K; ++j) {
+      const long h = height[i][j];
+      faces.push_back({{i, j, 0}, {0, 1, 0}, {1, 0, 0}});       // bottom, -z
+      faces.push_back({{i, j, h}, {1, 0, 0}, {0, 1, 0}});       // top, +z
+      for(long z = height_at(i, j - 1); z < h; ++z) faces.push_back({{i, j, z}, {1, 0, 0}, {0, 0, 1}});       // -y
+      for(long z = height_at(i, j + 1); z < h; ++z) faces.push_back({{i, j + 1, z}, {0, 0, 1}, {1, 0, 0}});   // +y
+      for(long z = height_at(i - 1, j); z < h; ++z) faces.push_back({{i, j, z}, {0, 0, 1}, {0, 1, 0}});       // -x
+      for(long z = height_at(i + 1, j); z < h; ++z) faces.push_back({{i + 1, j, z}, {0, 1, 0}, {0, 0, 1}});   // +x
+    }
+  std::vector<Seamless_patch> patches;
+  const double scale = double(K);   // (the base is the unit square)
+  for(std::size_t k = 0; k < faces.size(); ++k) {
+    const Face f = faces[k];
+    const double du = double(long(k) % 32 * (N + 1)), dv = double(long(k) / 32 * (N + 1));
+    Seamless_patch p;
+    p.n = n;
+    p.key = [f, N](long i, long j) {
+      return std::array<long, 3>{N * f.o[0] + i * f.u[0] + j * f.v[0], N * f.o[1] + i * f.u[1] + j * f.v[1],
+                                 N * f.o[2] + i * f.u[2] + j * f.v[2]};
+    };
+    p.position = [key = p.key, N, scale](long i, long j) {
+      const std::array<long, 3> x = key(i, j);
+      return std::array<double, 3>{double(x[0]) / double(N) / scale, double(x[1]) / double(N) / scale,
+                                   double(x[2]) / double(N) / scale};
+    };
+    p.uv = [du, dv](long i, long j) { return std::array<double, 2>{du + double(i), dv + double(j)}; };
     patches.push_back(p);
   }
   return seamless_mesh(patches);
