@@ -480,6 +480,7 @@ struct Python_mesh
   py::object vertices, elements, rest = py::none(), rest_elements = py::none(), fixed = py::none();
   py::dict point_fields, cell_fields;   ///< .vtk: name -> one value per vertex or element
   py::object welded_vertex_of_file_vertex = py::none();   ///< OBJ seams as duplicated v, welded
+  py::object file_vertices = py::none(), file_elements = py::none();   ///< the file's own v lines and faces
   std::string welding_note;
 };
 
@@ -547,7 +548,11 @@ Python_mesh read_file(const std::string& path, const py::handle& weld)
   }
   if(!mesh.rest.empty()) m.rest = points_of(mesh.rest, columns(mesh.rest_dimension));
   if(mesh.has_fixed) m.fixed = ids_vector(mesh.fixed);
-  if(mesh.has_welded_vertices()) m.welded_vertex_of_file_vertex = ids_vector(mesh.welded_vertex_of_file_vertex);
+  if(mesh.has_welded_vertices()) {
+    m.welded_vertex_of_file_vertex = ids_vector(mesh.welded_vertex_of_file_vertex);
+    m.file_vertices = points_of(mesh.file_vertices, 3);
+    m.file_elements = ids_of(mesh.simplex_file_vertices, 3);
+  }
   m.welding_note = mesh.welding_note;
   return m;
 }
@@ -571,12 +576,32 @@ IO::VTK_fields fields_of(const py::handle& fields, std::size_t count, const std:
   return out;
 }
 
+/// The layout of a Mesh that read() welded (its own v lines and faces) on
+/// `mesh`, for write_OBJ() to write back; the writer checks that it matches.
+void take_layout(const py::handle& layout, Mesh_file& mesh)
+{
+  if(layout.is_none()) return;
+  if(!py::isinstance<Python_mesh>(layout))
+    throw py::type_error("layout must be a Mesh that read() returned, not " + std::string(py::repr(layout)));
+  const Python_mesh& like = layout.cast<const Python_mesh&>();
+  if(like.welded_vertex_of_file_vertex.is_none()) return;
+  mesh.file_vertices = to_points(points_array(like.file_vertices, "layout.file_vertices"));
+  const Ids welded = ids_array(like.welded_vertex_of_file_vertex.attr("reshape")(-1, 1), "layout.welded_vertex_of_file_vertex");
+  for(py::ssize_t u = 0; u < welded.shape(0); ++u) {
+    if(welded.at(u, 0) < 0) throw py::value_error("layout.welded_vertex_of_file_vertex: negative id");
+    mesh.welded_vertex_of_file_vertex.push_back(std::size_t(welded.at(u, 0)));
+  }
+  copy_elements(ids_array(like.file_elements, "layout.file_elements"), 3, mesh.file_vertices.size(), "triangle",
+                "layout.file_elements", mesh.simplex_file_vertices);
+}
+
 void write_file(const std::string& path, const py::handle& vertices, const py::handle& elements, const py::handle& rest,
            const py::handle& rest_elements, const py::handle& kind, const py::handle& fixed,
-           const py::handle& point_fields, const py::handle& cell_fields)
+           const py::handle& point_fields, const py::handle& cell_fields, const py::handle& layout)
 {
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
   Mesh_file& mesh = problem.mesh;
+  take_layout(layout, mesh);
   if(!fixed.is_none()) {
     const std::vector<bool> flags = fixed_flags(fixed, mesh);
     for(std::size_t v = 0; v < flags.size(); ++v)
@@ -758,6 +783,10 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .def_readonly("cell_fields", &Python_mesh::cell_fields, ".vtk: the cell scalars of one component, by name")
     .def_readonly("welded_vertex_of_file_vertex", &Python_mesh::welded_vertex_of_file_vertex,
                   "OBJ with seams as duplicated v: for each v line, the id of the vertex it was welded into; else None")
+    .def_readonly("file_vertices", &Python_mesh::file_vertices,
+                  "OBJ with seams as duplicated v: the file's own v lines (n_file x 3); else None")
+    .def_readonly("file_elements", &Python_mesh::file_elements,
+                  "OBJ with seams as duplicated v: each triangle's file vertices (m x 3); else None")
     .def_readonly("welding_note", &Python_mesh::welding_note,
                   "OBJ: why vertices at one point were read as written rather than welded; else ''")
     .def("__repr__", [](const Python_mesh& mesh) {
@@ -776,6 +805,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));
   m.def("_write", &write_file, py::arg("path"), py::arg("vertices"), py::arg("elements"), py::kw_only(), py::arg("rest"),
-        py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"), py::arg("point_fields"), py::arg("cell_fields"));
+        py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"), py::arg("point_fields"), py::arg("cell_fields"),
+        py::arg("layout"));
   m.def("_project_on_best_fit_plane", &project_on_best_fit_plane, py::arg("vertices"), py::arg("triangles"));
 }

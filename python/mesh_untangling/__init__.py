@@ -166,13 +166,15 @@ def read(path, *, weld="auto"):
     ``mesh.welding_note`` says why not), ``"off"`` never, a distance: points
     that close (a weld that merges two corners of a face, or whose seams are
     no transitions, raises ReadError).  ``mesh.welded_vertex_of_file_vertex``
-    then maps each v line to its vertex.
+    then maps each v line to its vertex, ``mesh.file_vertices`` and
+    ``mesh.file_elements`` are the file's own v lines and faces, and
+    ``write(..., layout=mesh)`` writes them back.
     """
     return _core._read(str(path), weld)
 
 
 def write(path, vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None, point_fields=None,
-          cell_fields=None):
+          cell_fields=None, layout=None):
     """Writes a mesh file in the format of the extension (.obj, .off, .vtk, .mesh, .input).
 
     ``vertices``, ``elements``, ``rest``, ``kind`` and ``rest_elements`` are
@@ -180,11 +182,15 @@ def write(path, vertices, elements, *, rest=None, fixed=None, kind=None, rest_el
     vt; a map alone is its own v); ``fixed`` is written where the format
     holds it (.input handles, a .vtk 'fixed' field).  ``point_fields`` and
     ``cell_fields`` (.vtk only) map field names to one number per vertex or
-    per element.  The file is written whole or not at all: WriteError names
-    the problem and nothing is left at ``path``.
+    per element.  ``layout``: the Mesh that read() returned for an OBJ whose
+    seams were written as duplicated v: the OBJ is written back with that
+    file's own v lines and faces (``mesh.file_vertices``,
+    ``mesh.file_elements``); the elements must be the same.  The file is
+    written whole or not at all: WriteError names the problem and nothing
+    is left at ``path``.
     """
     _core._write(str(path), vertices, elements, rest=rest, rest_elements=rest_elements, kind=kind, fixed=fixed,
-                 point_fields=point_fields, cell_fields=cell_fields)
+                 point_fields=point_fields, cell_fields=cell_fields, layout=layout)
 
 
 def project_on_best_fit_plane(vertices, triangles):

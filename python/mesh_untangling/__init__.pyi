@@ -112,6 +112,8 @@ class Mesh:
     point_fields: dict[str, npt.NDArray]
     cell_fields: dict[str, npt.NDArray]
     welded_vertex_of_file_vertex: Optional[npt.NDArray[np.int64]]
+    file_vertices: Optional[npt.NDArray[np.float64]]
+    file_elements: Optional[npt.NDArray[np.int64]]
     welding_note: str
 
 Fixed = Union[None, Literal["boundary"], ArrayLike]
@@ -133,5 +135,5 @@ def read(path: Path, *, weld: Union[Literal["auto", "off"], float] = "auto") -> 
 def write(path: Path, vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None, fixed: Fixed = None,
           kind: Optional[Kind] = None, rest_elements: Optional[ArrayLike] = None,
           point_fields: Optional[Mapping[str, ArrayLike]] = None,
-          cell_fields: Optional[Mapping[str, ArrayLike]] = None) -> None: ...
+          cell_fields: Optional[Mapping[str, ArrayLike]] = None, layout: Optional[Mesh] = None) -> None: ...
 def project_on_best_fit_plane(vertices: ArrayLike, triangles: ArrayLike) -> npt.NDArray[np.float64]: ...

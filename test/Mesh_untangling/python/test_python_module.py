@@ -266,6 +266,24 @@ class Kinds(unittest.TestCase):
             mu.read(duplicated, weld=[1])
         with self.assertRaisesRegex(mu.ReadError, r"torus-dup.obj:\d+: face \d+: its vertices \d+ and \d+ are welded"):
             mu.read(duplicated, weld=100.0)
+        # untangled and written back with the file's own v lines and faces
+        uv, result = mu.untangle(b.vertices, b.elements, rest=b.rest, rest_elements=b.rest_elements)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        out = os.path.join(self.dir.name, "torus-dup-out.obj")
+        mu.write(out, uv, b.elements, rest=b.rest, rest_elements=b.rest_elements, layout=b)
+        with open(duplicated) as f, open(out) as g:
+            given, written = f.read().split("\n"), g.read().split("\n")
+        for prefix in ("v ", "f "):
+            self.assertEqual([l for l in given if l.startswith(prefix)], [l for l in written if l.startswith(prefix)])
+        again = mu.read(out)
+        self.assertTrue(np.array_equal(again.vertices, uv))
+        shared_out = os.path.join(self.dir.name, "torus-shared-out.obj")
+        mu.write(shared_out, uv, b.elements, rest=b.rest, rest_elements=b.rest_elements)
+        self.assertIsNone(mu.read(shared_out).welded_vertex_of_file_vertex)
+        with self.assertRaisesRegex(TypeError, "layout must be a Mesh"):
+            mu.write(shared_out, uv, b.elements, rest=b.rest, rest_elements=b.rest_elements, layout=3)
+        with self.assertRaisesRegex(mu.WriteError, "do not match the mesh"):
+            mu.write(shared_out, uv, b.elements[::-1], rest=b.rest, rest_elements=b.rest_elements[::-1], layout=b)
 
     def test_free_boundary_protected_by_phantoms(self):
         vertices, triangles, _ = tangled_square()
