@@ -8,6 +8,7 @@ environment, MU_CLI (untangle_mesh) and MU_MAKE (make_tangled_mesh).
 import os
 import signal
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -19,6 +20,9 @@ import mesh_untangling as mu
 
 CLI = os.environ["MU_CLI"]
 MAKE = os.environ["MU_MAKE"]
+# rewrites a shared-v OBJ with seams as one v per vt (test_cli_seams uses it too)
+TO_DUPLICATED_VERTICES = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
+                                      "obj_seams_as_duplicated_vertices.py")
 
 
 def make(kind, n, amplitude, seed, path):
@@ -237,16 +241,9 @@ class Kinds(unittest.TestCase):
         shared = os.path.join(self.dir.name, "torus.obj")
         make("torus", 6, 0.5, 1, shared)
         duplicated = os.path.join(self.dir.name, "torus-dup.obj")
+        subprocess.run([sys.executable, TO_DUPLICATED_VERTICES, shared, duplicated], check=True)
         with open(shared) as f:
-            lines = f.read().split("\n")
-        v = [l for l in lines if l.startswith("v ")]
-        vt = [l for l in lines if l.startswith("vt ")]
-        faces = [[c.split("/") for c in l.split()[1:]] for l in lines if l.startswith("f ")]
-        vertex_of_vt = {int(t): int(i) for face in faces for i, t in face}
-        with open(duplicated, "w") as f:
-            f.writelines(v[vertex_of_vt[t] - 1] + "\n" for t in range(1, len(vt) + 1))
-            f.writelines(l + "\n" for l in vt)
-            f.writelines("f " + " ".join(f"{t}/{t}" for _, t in face) + "\n" for face in faces)
+            vt = [l for l in f if l.startswith("vt ")]
         a, b = mu.read(shared), mu.read(duplicated)
         self.assertIsNone(a.welded_vertex_of_file_vertex)
         self.assertEqual(len(b.welded_vertex_of_file_vertex), len(vt))
