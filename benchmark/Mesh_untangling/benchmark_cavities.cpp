@@ -16,6 +16,7 @@
 // e.g. benchmark_cavities --degrees 135 --time-limit 900 1.0 0.6 0.4
 
 #include "cases.h"
+#include "memory_reuse.h"
 #include "cavities.h"
 #include "untangle_mesh_file.h"
 
@@ -56,6 +57,7 @@ int bad_arguments(const std::string& what)
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();
   Cavities_options options;
   double seconds = 300;
   std::string directory;

@@ -11,6 +11,7 @@
 //                           [--instance NAME,...] [--verbose] [--trace] [--write DIR] [--list]
 
 #include "free_boundary_families.h"
+#include "memory_reuse.h"
 #include "thread_limit.h"
 
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
@@ -357,6 +358,7 @@ void write_instances(const std::vector<Family_instance>& instances, const std::s
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();
   Arguments a;
   std::vector<std::pair<std::string, std::vector<Family_instance>>> families;
   try {

@@ -11,6 +11,7 @@
 // Run with --help for the forms of CASE.
 
 #include "cases.h"
+#include "memory_reuse.h"
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
@@ -584,6 +585,7 @@ Arguments parse_arguments(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();
   Arguments arguments;
   std::ofstream markdown;
   try {

@@ -20,6 +20,7 @@
 // face, hundreds of cones), written as an OBJ with seams; AMPLITUDE moves
 // the uv of half of the vertices off the seams.
 #include "generators.h"
+#include "memory_reuse.h"
 #include "seamless_generators.h"
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
@@ -98,6 +99,7 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();
   const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase "
                             "N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }

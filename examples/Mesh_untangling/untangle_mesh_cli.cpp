@@ -7,6 +7,7 @@
 //   0 locally invertible, 1 not (result still written), 2 bad usage or input,
 //   3 inverted elements (or over-wound stars) with only fixed vertices are left:
 //     nothing can repair them (result still written).
+#include "memory_reuse.h"
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
@@ -964,6 +965,7 @@ const CLI::Validator weld_option(
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();
   Arguments args;
   CLI::App app{"Untangles a 2D triangle or quadrilateral map, or a tetrahedral or hexahedral mesh, until it is "
                "locally invertible (cells: every corner simplex positive).\n"
