@@ -5,6 +5,7 @@
 // Usage: test_invertibility [shared data dir]
 
 #include <CGAL/Mesh_untangling/invertibility.h>
+#include <CGAL/Mesh_untangling/internal/invertibility/star_classification.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
@@ -557,6 +559,109 @@ static void test_boundary_vertices_3()
   CHECK(std::size_t(std::count(found.begin(), found.end(), 1)) == on_cube_faces);
 }
 
+// ---------------------------------------------------------------- link classification
+
+using Link = std::vector<std::array<std::size_t, 3>>;
+
+// The sphere of 2 poles and k equator vertices (ids offset by `first`), outward oriented.
+static Link bipyramid(std::size_t k, std::size_t first = 0)
+{
+  Link link;
+  const std::size_t north = first + k, south = first + k + 1;
+  for(std::size_t i = 0; i < k; ++i) {
+    const std::size_t a = first + i, b = first + (i + 1) % k;
+    link.push_back({a, b, north});
+    link.push_back({b, a, south});
+  }
+  return link;
+}
+
+// The small links (bit sets) and the large ones (sorting) must tell the same
+// type; both paths are run on every link, and the expected type is checked.
+static void test_link_classifiers()
+{
+  using MU::internal::Star_type;
+  MU::internal::Surface_classifier classify;
+  std::size_t compared = 0;
+  const auto check = [&](const Link& link, Star_type expected) {
+    const Star_type small = classify(link), sorted = classify(link, true);
+    CHECK(small == sorted);
+    CHECK(small == expected);
+    ++compared;
+  };
+  for(std::size_t k : {3, 20, 62, 63, 64, 100}) {   // 64 link vertices at k = 62; the sorting path past it
+    const Link sphere = bipyramid(k, 1000);
+    check(sphere, Star_type::CLOSED);
+    Link disk = sphere;
+    disk.pop_back();
+    check(disk, Star_type::OPEN);
+    Link two_holes = sphere;                          // two boundary loops: not a disk
+    two_holes.erase(two_holes.begin() + 3);
+    two_holes.erase(two_holes.begin());
+    check(two_holes, Star_type::NON_MANIFOLD);
+    Link flipped = sphere;                            // one face against the others
+    std::swap(flipped[1][0], flipped[1][1]);
+    check(flipped, Star_type::NON_MANIFOLD);
+    Link doubled = sphere;                            // one face twice
+    doubled.push_back(sphere[0]);
+    check(doubled, Star_type::NON_MANIFOLD);
+    Link two_spheres = sphere;                        // disconnected
+    const Link other = bipyramid(4, 5000);
+    two_spheres.insert(two_spheres.end(), other.begin(), other.end());
+    check(two_spheres, Star_type::NON_MANIFOLD);
+    Link pinched = sphere;                            // two spheres sharing a vertex
+    Link touching = bipyramid(4, 5000);
+    for(auto& t : touching)
+      for(auto& v : t) if(v == 5000 + 4) v = 1000 + k;
+    pinched.insert(pinched.end(), touching.begin(), touching.end());
+    check(pinched, Star_type::NON_MANIFOLD);
+  }
+  // Random soups of few vertices with sparse ids (a few triangles with a
+  // repeated vertex among them): only agreement can be asked.
+  std::mt19937 random(7);
+  for(int trial = 0; trial < 20000; ++trial) {
+    const std::size_t vertices = 3 + random() % 8, triangles = 1 + random() % 14;
+    Link link;
+    while(link.size() < triangles) {
+      std::array<std::size_t, 3> t = {random() % vertices, random() % vertices, random() % vertices};
+      if((t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) && random() % 50 != 0) continue;
+      for(auto& v : t) v = 7919 * v + 13;
+      link.push_back(t);
+    }
+    const Star_type small = classify(link), sorted = classify(link, true);
+    CHECK(small == sorted);
+    ++compared;
+  }
+  std::cout << "link classifiers: " << compared << " links, both paths agree\n";
+}
+
+// The verdict's atan2 (angles.h) against the library's: within two ulps,
+// with the same special values.
+static void test_upper_half_plane_angle()
+{
+  using MU::internal::upper_half_plane_angle;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  double worst = 0;
+  for(int trial = 0; trial < 200000; ++trial) {
+    const double y = std::abs(std::ldexp(unit(random), exponent(random)));
+    const double x = trial % 3 == 0 ? std::ldexp(unit(random), exponent(random)) : y * unit(random) * 4;
+    const double expected = std::atan2(y, x);
+    worst = std::max(worst, std::abs(upper_half_plane_angle(y, x) - expected) /
+                              std::max(expected, std::numeric_limits<double>::min()));
+  }
+  CHECK(worst <= 4 * std::numeric_limits<double>::epsilon());
+  const double inf = std::numeric_limits<double>::infinity();
+  for(const auto& [y, x] : std::vector<std::pair<double, double>>{
+        {0., 1.}, {0., -1.}, {0., 0.}, {0., -0.}, {1., 0.}, {1., -0.}, {2., 2.}, {2., -2.}, {1e-300, -1.},
+        {inf, 1.}, {1., -inf}, {inf, inf}, {1., inf}})
+    CHECK(upper_half_plane_angle(y, x) == std::atan2(y, x));
+  CHECK(std::isnan(upper_half_plane_angle(std::nan(""), 1.)) && std::isnan(upper_half_plane_angle(1., std::nan(""))));
+  std::cout << "upper half plane angle: largest relative error " << worst / std::numeric_limits<double>::epsilon()
+            << " epsilon\n";
+}
+
 int main(int argc, char** argv)
 {
   test_grid_2();
@@ -566,6 +671,8 @@ int main(int argc, char** argv)
   test_input_defects_3();
   test_chunks_3();
   test_boundary_vertices_3();
+  test_link_classifiers();
+  test_upper_half_plane_angle();
   const bool ran_data = argc > 1 && test_armadillo(argv[1]);
   if(argc <= 1)
     std::cout << "SKIPPED: no data directory given, real data not checked\n";

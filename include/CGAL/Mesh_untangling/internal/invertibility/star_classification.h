@@ -77,12 +77,94 @@ public:
 /// a consistently oriented, connected surface of Euler characteristic 2 without
 /// boundary (1 with boundary): a sphere (a disk).  Pinched links lower the
 /// characteristic, so they are rejected too.
+///
+/// A link of at most 64 vertices (every star of a usable mesh) is checked on
+/// bit sets, one row of directed edges per link vertex; a larger one by
+/// sorting.  Both give the same type (tests: random links through both).
 class Surface_classifier
 {
-  std::vector<std::size_t> vertices_;                  // of the link, sorted: local id = rank
+  using Triangles = std::vector<std::array<std::size_t, 3>>;
+  std::vector<std::size_t> vertices_;                  // of the link: local id = index
   std::vector<std::array<std::uint32_t, 3>> local_;    // the link triangles in local ids
-  std::vector<std::uint64_t> directed_;                // directed edges, (from << 32) | to
+  std::vector<std::uint64_t> directed_;                // (by sorting) directed edges, (from << 32) | to
   std::vector<std::uint32_t> parent_;
+
+  static int lowest_bit(std::uint64_t bits)
+  {
+#if defined(__GNUC__)
+    return __builtin_ctzll(bits);
+#else
+    int i = 0;
+    for(; (bits & 1) == 0; bits >>= 1) ++i;
+    return i;
+#endif
+  }
+
+  /// The type from the counts of the link's vertices, directed edges
+  /// (`paired`: those met in both directions) and triangles.
+  template <class Is_connected>
+  static Star_type type_of(std::size_t vertices, std::size_t unpaired, std::size_t paired, std::size_t triangles,
+                           Is_connected&& is_connected)
+  {
+    const std::size_t edges = unpaired + paired / 2;
+    const long euler = long(vertices) - long(edges) + long(triangles);
+    if(euler != (unpaired == 0 ? 2 : 1) || !is_connected())
+      return Star_type::NON_MANIFOLD;
+    return unpaired == 0 ? Star_type::CLOSED : Star_type::OPEN;
+  }
+
+  /// Local ids in first-seen order by a linear search; false past 64 vertices.
+  bool number_small_link(const Triangles& triangles)
+  {
+    vertices_.clear();
+    local_.resize(triangles.size());
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t v = triangles[i][k];
+        std::size_t id = 0;
+        while(id < vertices_.size() && vertices_[id] != v) ++id;
+        if(id == vertices_.size()) {
+          if(id == 64) return false;
+          vertices_.push_back(v);
+        }
+        local_[i][k] = std::uint32_t(id);
+      }
+    return true;
+  }
+
+  Star_type classify_small_link(std::size_t triangles)
+  {
+    const std::size_t n = vertices_.size();
+    std::array<std::uint64_t, 64> out, in;   // out[a] bit b: directed edge a -> b; in[b] bit a: the same
+    std::fill_n(out.begin(), n, 0);
+    std::fill_n(in.begin(), n, 0);
+    std::size_t paired = 0;                  // directed edges whose reverse is met too
+    for(const auto& t : local_)
+      for(int k = 0; k < 3; ++k) {
+        const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+        // A repeated directed edge is a face shared by more than two elements or
+        // met twice with the same orientation.
+        if(out[a] >> b & 1)
+          return Star_type::NON_MANIFOLD;
+        out[a] |= std::uint64_t(1) << b;
+        in[b] |= std::uint64_t(1) << a;
+        paired += 2 * (out[b] >> a & 1);
+      }
+    return type_of(n, 3 * triangles - paired, paired, triangles, [&] {
+      const std::uint64_t all = n == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << n) - 1;
+      std::uint64_t reached = 1, frontier = 1;
+      while(frontier != 0) {
+        std::uint64_t next = 0;
+        for(; frontier != 0; frontier &= frontier - 1) {
+          const int a = lowest_bit(frontier);
+          next |= out[a] | in[a];
+        }
+        frontier = next & ~reached;
+        reached |= next;
+      }
+      return reached == all;
+    });
+  }
 
   std::uint32_t root(std::uint32_t i)
   {
@@ -109,8 +191,14 @@ class Surface_classifier
   }
 
 public:
-  Star_type operator()(const std::vector<std::array<std::size_t, 3>>& triangles)
+  /// `by_sorting` forces the path of large links (for tests).
+  Star_type operator()(const Triangles& triangles, bool by_sorting = false)
   {
+    for(const auto& t : triangles)   // (an element with a repeated vertex)
+      if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+        return Star_type::NON_MANIFOLD;
+    if(!by_sorting && number_small_link(triangles))
+      return classify_small_link(triangles.size());
     // Local ids first: the sorts and searches below then work on small integers.
     vertices_.clear();
     for(const auto& t : triangles)
@@ -127,20 +215,13 @@ public:
         directed_.push_back(std::uint64_t(local_[i][k]) << 32 | local_[i][(k + 1) % 3]);
     }
     std::sort(directed_.begin(), directed_.end());
-    // A repeated directed edge is a face shared by more than two elements or
-    // met twice with the same orientation.
     if(std::adjacent_find(directed_.begin(), directed_.end()) != directed_.end())
       return Star_type::NON_MANIFOLD;
     std::size_t paired = 0;
     for(std::uint64_t e : directed_)
       paired += std::binary_search(directed_.begin(), directed_.end(), e << 32 | e >> 32);
-    const std::size_t unpaired = directed_.size() - paired;
-    const std::size_t edges = unpaired + paired / 2;
-
-    const long euler = long(vertices_.size()) - long(edges) + long(triangles.size());
-    if(euler != (unpaired == 0 ? 2 : 1) || !is_connected())
-      return Star_type::NON_MANIFOLD;
-    return unpaired == 0 ? Star_type::CLOSED : Star_type::OPEN;
+    return type_of(vertices_.size(), directed_.size() - paired, paired, triangles.size(),
+                   [this] { return is_connected(); });
   }
 };
 

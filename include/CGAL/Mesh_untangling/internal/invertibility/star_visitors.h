@@ -86,7 +86,7 @@ void visit_vertex_stars_3(const std::vector<Vec3>& positions,
   const auto corner = [&](std::size_t v, std::size_t e) {
     const auto& t = tets[e];
     const int i = int(std::find(t.begin(), t.end(), v) - t.begin());
-    const auto perm = even_permutation_starting_with<4>(i);
+    const auto& perm = tetrahedron_permutation_starting_with(i);
     std::array<std::size_t, 3> face = {t[perm[1]], t[perm[2]], t[perm[3]]};
     if(reference_sign(reference_orientation, e) < 0)
       std::swap(face[1], face[2]);
@@ -131,7 +131,7 @@ void visit_edge_fans_3(const std::vector<Vec3>& positions,
       for(int j = 0; j < 4; ++j) {
         if(t[j] <= a)
           continue;
-        const auto perm = even_permutation_starting_with<4>(i, j);
+        const auto& perm = tetrahedron_permutation_starting_with(i, j);
         Link_edge l{t[perm[2]], t[perm[3]]};
         if(reference_sign(reference_orientation, e) < 0)
           std::swap(l.from, l.to);
