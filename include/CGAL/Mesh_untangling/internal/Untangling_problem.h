@@ -475,68 +475,129 @@ int extreme_target_exponent(const Untangling_input<d>& in)
   return std::abs(exponent) > 96 ? exponent : 0;
 }
 
+/// How the input's targets are read, element by element: the given simplex
+/// or a regular one, divided by 2^extreme_target_exponent(), its first two
+/// vertices swapped where the map is negative and no target is given.
+template <int d>
+class Target_reader
+{
+  const Untangling_input<d>& in_;
+  int exponent_;
+  bool map_is_negative_;
+
+public:
+  using Target = std::array<Eigen::Matrix<double, d, 1>, d + 1>;
+
+  explicit Target_reader(const Untangling_input<d>& in)
+    : in_(in), exponent_(extreme_target_exponent(in)), map_is_negative_(in.targets.empty() && map_volume_sign<d>(in) < 0)
+  {}
+
+  Target operator()(std::size_t k) const
+  {
+    Target t = in_.targets.empty() ? regular_simplex<d>() : in_.targets[k];
+    if(exponent_ != 0)
+      for(auto& p : t) p = p.unaryExpr([this](double c) { return std::ldexp(c, -exponent_); });
+    if(map_is_negative_) std::swap(t[0], t[1]);
+    return t;
+  }
+};
+
+/// Which targets oriented_targets() replaces and how it orients every
+/// element, from each read target's volume and quality: a degenerate target
+/// (mean ratio below the threshold) becomes a regular simplex that keeps the
+/// given one's orientation, or the majority's where it has none.
+struct Target_orientation_rule
+{
+  std::vector<double> volume;   // of the target as read
+  std::vector<char> degenerate;
+  double mean_volume = 1;       // over the targets kept
+  int majority = 0;             // > 0: most kept targets are positive
+  std::size_t replaced = 0;
+
+  template <int d>
+  void read(const Untangling_input<d>& in, double degenerate_quality, const Target_reader<d>& target,
+            std::vector<typename Target_reader<d>::Target>* targets)
+  {
+    const std::size_t m = in.elements.size();
+    volume.resize(m);
+    degenerate.assign(m, 0);
+    for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k) {
+        const auto t = target(k);
+        volume[k] = simplex_volume<d>(t);
+        degenerate[k] = !(mean_ratio<d>(t) >= degenerate_quality);
+        if(targets) (*targets)[k] = t;
+      }
+    });
+    double total = 0;
+    for(std::size_t k = 0; k < m; ++k)
+      if(!degenerate[k]) { total += std::abs(volume[k]); majority += volume[k] > 0 ? 1 : -1; }
+    replaced = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+    mean_volume = m > replaced ? total / double(m - replaced) : 1.;
+  }
+
+  /// The sign of the regular simplex that replaces the degenerate target k.
+  template <int d>
+  bool replacement_is_negative(const Untangling_input<d>& in, std::size_t k) const
+  {
+    const double given = in.targets.empty() ? 1. : volume[k];
+    return given < 0 || (given == 0 && majority < 0);
+  }
+
+  template <int d>
+  int orientation(const Untangling_input<d>& in, std::size_t k) const
+  {
+    if(degenerate[k]) return replacement_is_negative(in, k) ? -1 : 1;
+    return volume[k] > 0 ? 1 : -1;
+  }
+};
+
 /// The target of every element, in the units of the input's targets
 /// (divided by 2^extreme_target_exponent()):
 /// regular simplices where none is given (oriented as most of the map),
 /// degenerate ones (mean ratio below `degenerate_quality`) replaced by
 /// regular ones of the mean size that keep the rest element's orientation,
 /// if it has one.  Sets P.reference_orientation and
-/// P.degenerate_targets_replaced; `volume` is scratch space.
+/// P.degenerate_targets_replaced.
 template <int d>
 std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>
-oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untangling_problem<d>& P,
-                 std::vector<double>& volume)
+oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untangling_problem<d>& P)
 {
-  using Target = std::array<Eigen::Matrix<double, d, 1>, d + 1>;
   const std::size_t m = in.elements.size();
-  std::vector<Target> targets(m);
-  P.reference_orientation.assign(m, 1);
-  std::vector<char> degenerate(m, 0);
-  volume.resize(m);
-  const bool map_is_negative = in.targets.empty() && map_volume_sign<d>(in) < 0;
-  const int exponent = extreme_target_exponent(in);
+  std::vector<typename Target_reader<d>::Target> targets(m);
+  Target_orientation_rule rule;
+  rule.read<d>(in, degenerate_quality, Target_reader<d>(in), &targets);
+  P.degenerate_targets_replaced = rule.replaced;
+  const double regular_size = std::pow(rule.mean_volume, 1. / d);
+  P.reference_orientation.resize(m);
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
-      targets[k] = in.targets.empty() ? regular_simplex<d>() : in.targets[k];
-      if(exponent != 0)
-        for(auto& p : targets[k]) p = p.unaryExpr([exponent](double c) { return std::ldexp(c, -exponent); });
-      if(map_is_negative) std::swap(targets[k][0], targets[k][1]);
-      volume[k] = simplex_volume<d>(targets[k]);
-      degenerate[k] = !(mean_ratio<d>(targets[k]) >= degenerate_quality);
-    }
-  });
-  double total = 0;
-  int majority = 0;
-  for(std::size_t k = 0; k < m; ++k)
-    if(!degenerate[k]) { total += std::abs(volume[k]); majority += volume[k] > 0 ? 1 : -1; }
-  const std::size_t good = m - std::count(degenerate.begin(), degenerate.end(), 1);
-  P.degenerate_targets_replaced = m - good;
-  const double mean_volume = good > 0 ? total / good : 1.;
-  const double regular_size = std::pow(mean_volume, 1. / d);
-  for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
-    for(std::size_t k = first; k < last; ++k) {
-      if(degenerate[k]) {
-        const double vol = in.targets.empty() ? 1. : volume[k];   // the given target's
+      if(rule.degenerate[k]) {
         targets[k] = regular_simplex<d>();
         for(auto& p : targets[k]) p *= regular_size;
-        if(vol < 0 || (vol == 0 && majority < 0)) std::swap(targets[k][0], targets[k][1]);
+        if(rule.replacement_is_negative(in, k)) std::swap(targets[k][0], targets[k][1]);
       }
-      P.reference_orientation[k] = simplex_volume<d>(targets[k]) > 0 ? 1 : -1;
+      P.reference_orientation[k] = rule.orientation(in, k);
     }
   });
   return targets;
 }
 
 /// The orientation (+1 or -1) of every element's target, as the solver
-/// takes it (oriented_targets), and the number of degenerate targets replaced.
+/// takes it (oriented_targets), and the number of degenerate targets
+/// replaced; without storing the targets (a tenth of a gigabyte for a
+/// million tetrahedra, written and dropped on every verdict).
 template <int d>
 std::vector<int> target_orientations(const Untangling_input<d>& in, std::size_t* degenerate_replaced = nullptr)
 {
-  Untangling_problem<d> P;
-  std::vector<double> scratch;
-  oriented_targets<d>(in, default_degenerate_quality, P, scratch);
-  if(degenerate_replaced) *degenerate_replaced = P.degenerate_targets_replaced;
-  return std::move(P.reference_orientation);
+  Target_orientation_rule rule;
+  rule.read<d>(in, default_degenerate_quality, Target_reader<d>(in), nullptr);
+  if(degenerate_replaced) *degenerate_replaced = rule.replaced;
+  std::vector<int> orientation(in.elements.size());
+  for_each_chunk(orientation.size(), element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k) orientation[k] = rule.orientation(in, k);
+  });
+  return orientation;
 }
 
 /// The factor from the targets' units to the normalized map's: AS_GIVEN
@@ -668,7 +729,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   }
   {
     std::vector<double> scratch;
-    auto targets = oriented_targets<d>(in, degenerate_quality, P, scratch);
+    auto targets = oriented_targets<d>(in, degenerate_quality, P);
     const double target_factor = target_scale_factor<d>(in, P, targets, resolved_target_scaling<d>(in, scaling), scratch);
     add_elements<d>(in, targets, target_factor, P);
   }   // (the colouring's own arrays reach the peak memory of a large run)
