@@ -9,6 +9,7 @@
 //
 // usage: benchmark_readers [N = 300] [REPEAT = 3] [DIR = .]
 #include "generators.h"
+#include "memory_reuse.h"
 
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 
@@ -55,6 +56,7 @@ double seconds_to_read(const std::string& path, int repeat)
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();   // as the command-line tool does
   const long long n = argc > 1 ? std::atoll(argv[1]) : 300;
   const int repeat = argc > 2 ? std::atoi(argv[2]) : 3;
   const std::string dir = argc > 3 ? argv[3] : ".";

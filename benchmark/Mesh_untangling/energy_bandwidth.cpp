@@ -12,6 +12,7 @@
 // CASE as for benchmark_untangle (e.g. generated:cube:55:0.6:1).
 
 #include "cases.h"
+#include "memory_reuse.h"
 #include "thread_limit.h"
 
 #include <CGAL/Mesh_untangling/internal/Energy.h>
@@ -111,6 +112,7 @@ void measure(const Problem& problem, const std::string& name, int repeat, double
 
 int main(int argc, char** argv)
 {
+  Mesh_untangling_tools::reuse_freed_memory();   // as the command-line tool does
   int threads = 0, repeat = 10;
   std::vector<std::string> arguments;
   for(int i = 1; i < argc; ++i) {

@@ -513,12 +513,14 @@ struct Target_orientation_rule
   double mean_volume = 1;       // over the targets kept
   int majority = 0;             // > 0: most kept targets are positive
   std::size_t replaced = 0;
+  bool targets_given = false;   // (else regular ones, of volume 1)
 
   template <int d>
   void read(const Untangling_input<d>& in, double degenerate_quality, const Target_reader<d>& target,
             std::vector<typename Target_reader<d>::Target>* targets)
   {
     const std::size_t m = in.elements.size();
+    targets_given = !in.targets.empty();
     volume.resize(m);
     degenerate.assign(m, 0);
     for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
@@ -537,17 +539,15 @@ struct Target_orientation_rule
   }
 
   /// The sign of the regular simplex that replaces the degenerate target k.
-  template <int d>
-  bool replacement_is_negative(const Untangling_input<d>& in, std::size_t k) const
+  bool replacement_is_negative(std::size_t k) const
   {
-    const double given = in.targets.empty() ? 1. : volume[k];
+    const double given = targets_given ? volume[k] : 1.;
     return given < 0 || (given == 0 && majority < 0);
   }
 
-  template <int d>
-  int orientation(const Untangling_input<d>& in, std::size_t k) const
+  int orientation(std::size_t k) const
   {
-    if(degenerate[k]) return replacement_is_negative(in, k) ? -1 : 1;
+    if(degenerate[k]) return replacement_is_negative(k) ? -1 : 1;
     return volume[k] > 0 ? 1 : -1;
   }
 };
@@ -575,9 +575,9 @@ oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untan
       if(rule.degenerate[k]) {
         targets[k] = regular_simplex<d>();
         for(auto& p : targets[k]) p *= regular_size;
-        if(rule.replacement_is_negative(in, k)) std::swap(targets[k][0], targets[k][1]);
+        if(rule.replacement_is_negative(k)) std::swap(targets[k][0], targets[k][1]);
       }
-      P.reference_orientation[k] = rule.orientation(in, k);
+      P.reference_orientation[k] = rule.orientation(k);
     }
   });
   return targets;
@@ -595,7 +595,7 @@ std::vector<int> target_orientations(const Untangling_input<d>& in, std::size_t*
   if(degenerate_replaced) *degenerate_replaced = rule.replaced;
   std::vector<int> orientation(in.elements.size());
   for_each_chunk(orientation.size(), element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
-    for(std::size_t k = first; k < last; ++k) orientation[k] = rule.orientation(in, k);
+    for(std::size_t k = first; k < last; ++k) orientation[k] = rule.orientation(k);
   });
   return orientation;
 }

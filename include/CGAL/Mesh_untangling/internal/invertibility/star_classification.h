@@ -78,7 +78,7 @@ public:
 /// boundary (1 with boundary): a sphere (a disk).  Pinched links lower the
 /// characteristic, so they are rejected too.
 ///
-/// A link of at most 64 vertices (every star of a usable mesh) is checked on
+/// A link of at most 64 vertices (nearly every star of a real mesh) is checked on
 /// bit sets, one row of directed edges per link vertex; a larger one by
 /// sorting.  Both give the same type (tests: random links through both).
 class Surface_classifier
