@@ -20,6 +20,9 @@
 #include <CGAL/untangle_mesh.h>
 
 #include <boost/property_map/function_property_map.hpp>
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+#include <omp.h>
+#endif
 
 #include <array>
 #include <atomic>
@@ -173,6 +176,12 @@ int main(int argc, char** argv)
     else if(arg == "--rounds" && i + 1 < argc) rounds = std::stoi(argv[++i]);
   }
   const std::vector<Case> cases = make_cases(scale);
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+  // A supernodal factorization runs CHOLMOD's OpenMP regions serially and
+  // must give the application its own setting back, also from calls at once.
+  constexpr int application_levels = 3;
+  omp_set_max_active_levels(application_levels);
+#endif
 
   std::vector<Outcome> alone;
   for(const Case& c : cases) {
@@ -212,5 +221,10 @@ int main(int argc, char** argv)
   rand_caller.join();
   std::cout << differing << " of " << rounds * cases.size() << " concurrent calls differ from the calls made alone"
             << std::endl;
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+  CHECK_MESSAGE(omp_get_max_active_levels() == application_levels,
+                "OpenMP's max-active-levels is " << omp_get_max_active_levels() << " after the calls, not "
+                                                 << application_levels);
+#endif
   return test::exit_code();
 }

@@ -26,6 +26,9 @@
 #include <Eigen/CholmodSupport>
 #include <sys/mman.h>
 #include <sys/resource.h>
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+#include <omp.h>
+#endif
 #endif
 
 #include <algorithm>
@@ -91,6 +94,42 @@ inline bool blas_has_room(std::size_t factor_bytes)
   munmap(probe, room);
   return true;
 }
+
+/// A supernodal factorization or solve in progress: it holds blas_mutex,
+/// and runs CHOLMOD's OpenMP regions on the calling thread alone.  CHOLMOD
+/// opens them with a fixed team (CHOLMOD_OMP_NUM_THREADS, 4 in Debian's
+/// build) whatever the thread count asked for, and beside TBB's workers on
+/// the same cores its threads mostly wait: on a 21,102-tetrahedron Newton
+/// run (6 eps steps, 2 cores) the process spent 0.8 s of 2.4 s in the
+/// kernel, in futex waits; with the regions serial, 0.2 s of 1.7 s, with
+/// --threads 1 as with --threads 2.  The setting (max-active-levels, one
+/// for the process) is put back when the call ends; blas_mutex keeps the
+/// calls of several solvers from interleaving their saves and restores.
+class Blas_call
+{
+public:
+  explicit Blas_call(bool calls_blas)
+  {
+    if(!calls_blas) return;
+    lock_ = std::unique_lock<std::mutex>(blas_mutex());
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+    active_levels_ = omp_get_max_active_levels();
+    omp_set_max_active_levels(0);
+#endif
+  }
+  ~Blas_call()
+  {
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+    if(lock_.owns_lock()) omp_set_max_active_levels(active_levels_);
+#endif
+  }
+  Blas_call(const Blas_call&) = delete;
+  Blas_call& operator=(const Blas_call&) = delete;
+
+private:
+  std::unique_lock<std::mutex> lock_;
+  int active_levels_ = 0;
+};
 
 /// CHOLMOD's LL^T, supernodal or simplicial (see Newton_solver::analyze).
 class Cholmod_factorization : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>
@@ -798,19 +837,17 @@ private:
     }
   }
 
-  /// The BLAS lock (blas_mutex) when the factorization calls BLAS, else nothing.
-  std::unique_lock<std::mutex> lock_blas() const
-  {
+  /// A Blas_call when the factorization calls BLAS, else nothing.
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-    if(factorization_->calls_blas()) return std::unique_lock<std::mutex>(blas_mutex());
+  Blas_call lock_blas() const { return Blas_call(factorization_->calls_blas()); }
+#else
+  int lock_blas() const { return 0; }
 #endif
-    return {};
-  }
 
   /// H^-1 r, H the Hessian as last factorized.
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const
   {
-    const auto lock = lock_blas();
+    [[maybe_unused]] const auto lock = lock_blas();
     Eigen::VectorXd x = factorization_->solve(r);   // (evaluated here, under the lock)
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
     factorization_->throw_if_out_of_memory();
@@ -833,7 +870,7 @@ private:
     double trace = 0;
     for(std::size_t i = 0; i < diagonal.size(); ++i) trace += diagonal[i] = values[diagonal_position_[i]];
     trace /= std::max<std::size_t>(diagonal.size(), 1);
-    const auto lock = lock_blas();
+    [[maybe_unused]] const auto lock = lock_blas();
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
     const bool calls_blas = factorization_->calls_blas();
     if(calls_blas && !blas_has_room(factorization_->factor_bytes())) throw std::bad_alloc();
