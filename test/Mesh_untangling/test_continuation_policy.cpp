@@ -132,7 +132,7 @@ void check_relaxed_locked_ball()
   for(std::size_t v : mesh.fixed) blended[v] = in.positions[v];
   const MI::Untangling_options options;
   const MI::Protection_request<3> protection;
-  MI::Continuation_steps<3> steps(in, options, protection, rest);
+  MI::Continuation_steps<3> steps(in, options, protection, MI::Problem_kind<3>(in, protection).builds_phantoms(), rest);
   const std::vector<Eigen::Vector3d> relaxed = steps.carried(rest, 0, 1);
   const std::size_t blended_inverted = not_positive_against_rest(mesh, blended);
   const std::size_t relaxed_inverted = not_positive_against_rest(mesh, relaxed);

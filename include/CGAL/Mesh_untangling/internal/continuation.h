@@ -170,11 +170,12 @@ public:
 
   using Vector = Eigen::Matrix<double, d, 1>;
 
+  /// `build_phantoms`: whether the steps build phantoms of their own (Problem_kind::builds_phantoms).
   Continuation_steps(const Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection,
-               const std::vector<Vector>& rest)
+                     bool build_phantoms, const std::vector<Vector>& rest)
     : start_(std::chrono::steady_clock::now()), in_(in), options_(options), protection_(protection),
       given_(in.positions), path_(in, rest, given_), carried_(in, rest, path_), relaxation_(in, rest),
-      build_phantoms_(!protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in))
+      build_phantoms_(build_phantoms)
   {}
 
   /// A step from the locally invertible map `from` to `motion`: first
@@ -316,12 +317,12 @@ std::vector<Eigen::Matrix<double, d, 1>> extrapolated_map(const std::vector<Eige
 /// of `input_figures` (a run from the given map); its work is that of every step.
 template <int d>
 Untangling_result untangle_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
-                                           const Protection_request<d>& protection,
+                                           const Protection_request<d>& protection, bool build_phantoms,
                                            const std::vector<Eigen::Matrix<double, d, 1>>& rest,
                                            const Untangling_result& input_figures,
                                            Phantom_elements<d>* phantoms_used)
 {
-  Continuation_steps<d> c(in, options, protection, rest);
+  Continuation_steps<d> c(in, options, protection, build_phantoms, rest);
   auto valid = rest;    // the last locally invertible map
   auto previous = rest; // the one before it, at motion `previous_reached`
   double reached = 0, previous_reached = 0, increment = 1. / double(std::max<std::size_t>(options.continuation_steps, 1));

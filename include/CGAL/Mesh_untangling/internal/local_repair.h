@@ -143,7 +143,7 @@ bool untangle_region(Untangling_input<d>& in, const std::vector<char>& region, c
 }
 
 /// The local phase (see the file's comment) on `in` (no phantoms, targets
-/// given), within `options`' deadline and `options.max_outer_iterations` eps steps in
+/// given: Problem_kind::local_repair_applies), within `options`' deadline and `options.max_outer_iterations` eps steps in
 /// all: regions of 1 to local_repair_rings rings around its non-positive
 /// elements, each with the default theta, then with the shape term alone.
 /// Returns whether one region repaired them all (its free vertices are then
@@ -151,7 +151,6 @@ bool untangle_region(Untangling_input<d>& in, const std::vector<char>& region, c
 template <int d>
 bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, Untangling_result& work)
 {
-  if(in.phantom_elements > 0 || in.targets.empty()) return false;
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
   const std::vector<std::size_t> blockers = non_positive_elements<d>(in, P.reference_orientation);
   if(blockers.empty() || blockers.size() > local_repair_most_inverted) return false;
@@ -196,17 +195,18 @@ void describe_repaired_map(const Untangling_input<d>& in, const Untangling_optio
 }
 
 /// After a run `r` of `untangle` from the map `given` that left inverted
-/// elements in `in` on a problem whose boundary is fixed: the local phase on
-/// `in` when they are few, else the patient rerun of stage 0 from `given`
-/// followed by the local phase (see the file's comment), all within the
-/// run's time left.  A repaired map replaces `in`, and `r`
+/// elements in `in` on a problem to which the repair applies
+/// (Problem_kind::local_repair_applies): the local phase on `in` when they
+/// are few and `regions` may be cut out of the mesh
+/// (Problem_kind::local_regions_apply), else the patient rerun of stage 0
+/// from `given` followed by the local phase (see the file's comment), all
+/// within the run's time left.  A repaired map replaces `in`, and `r`
 /// describes it.
 template <int d>
 void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
-                          const Untangling_options& options, Untangling_result& r)
+                          const Untangling_options& options, Untangling_result& r, bool regions)
 {
-  if(r.status != Untangling_status::INVERTED_ELEMENTS_LEFT || in.targets.empty() ||
-     r.outer_iterations >= options.max_outer_iterations || has_free_boundary_vertex<d>(in))
+  if(r.status != Untangling_status::INVERTED_ELEMENTS_LEFT || r.outer_iterations >= options.max_outer_iterations)
     return;
   const auto start = std::chrono::steady_clock::now();
   // the eps steps left to the local runs, of the caller's budget
@@ -217,9 +217,7 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
   };
   Untangling_result work;
   bool repaired = false;
-  // (the regions of the local repair are cut meshes of their own, without
-  // the links of a seamless problem: that gets the patient rerun)
-  if(r.inverted_after <= local_repair_most_inverted && !in.has_links()) {
+  if(r.inverted_after <= local_repair_most_inverted && regions) {
     repaired = repair_locally<d>(in, within_budget(work), work);
   } else if(!out_of_time(options)) {
     Untangling_input<d> rerun = in;

@@ -12,6 +12,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLE_IMPL_H
 
 #include <CGAL/Mesh_untangling/internal/continuation.h>
+#include <CGAL/Mesh_untangling/internal/driver/Problem_kind.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
@@ -69,6 +70,7 @@ inline Untangling_options what_is_left_after(const Untangling_result& spent, con
 /// result with fewer defects is kept.
 template <int d>
 Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Problem_kind<d>& kind,
                                                          const Protection_request<d>& protection,
                                                          Phantom_elements<d>* phantoms_used)
 {
@@ -77,12 +79,8 @@ Untangling_result untangle_directly_or_from_convex_start(Untangling_input<d>& in
   } else {
     Phantom_elements<d> direct_phantoms;
     Untangling_result first = untangle_directly<d>(in, options, protection, &direct_phantoms);
-    const bool nothing_fixed = std::find(in.is_fixed.begin(), in.is_fixed.end(), true) == in.is_fixed.end();
     std::optional<std::vector<Eigen::Vector2d>> start;
-    // (the convex embedding is that of a triangulated disk, not of corner triangles)
-    // (nor that of a cut surface: its seams would come apart)
-    if(nothing_fixed && in.phantom_elements == 0 && !in.has_cells() && !in.has_links() &&
-       leaves_room_for_a_fallback(first, options)) {
+    if(kind.convex_start_applies() && leaves_room_for_a_fallback(first, options)) {
       const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
       start = tutte_start(in, P.reference_orientation);
     }
@@ -160,13 +158,14 @@ bool fixed_vertices_move_beyond_an_edge(const Untangling_input<d>& in,
 /// result, with `in` at its map.
 template <int d>
 std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>& in, const Untangling_options& options,
+                                                             const Problem_kind<d>& kind,
                                                              const Protection_request<d>& protection,
                                                              const std::vector<Eigen::Matrix<double, d, 1>>& rest)
 {
-  if(!fixed_vertices_move_beyond_an_edge<d>(in, rest)) return std::nullopt;
+  if(!kind.carried_start_applies() || !fixed_vertices_move_beyond_an_edge<d>(in, rest)) return std::nullopt;
   Untangling_options budget = options;   // (as much work as a direct run)
   budget.max_energy_evaluations = direct_run_evaluations(in.elements.size());
-  Continuation_steps<d> steps(in, budget, protection, rest);
+  Continuation_steps<d> steps(in, budget, protection, kind.builds_phantoms(), rest);
   const Untangling_result given = input_figures<d>(in, options);
   Untangling_result r = steps.try_predicted_step(steps.carried(rest, 0, 1), 1);
   r.inverted_before = given.inverted_before;
@@ -183,15 +182,16 @@ std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>
 template <int d>
 Untangling_result then_by_continuation(Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
                                        Untangling_result first, Phantom_elements<d> first_phantoms,
-                                       const Untangling_options& options, const Protection_request<d>& protection,
+                                       const Untangling_options& options, const Problem_kind<d>& kind,
+                                       const Protection_request<d>& protection,
                                        const std::vector<Eigen::Matrix<double, d, 1>>& rest,
                                        Phantom_elements<d>* phantoms_used)
 {
   const auto first_map = in.positions;
   in.positions = given;
   Phantom_elements<d> continued_phantoms;
-  Untangling_result continued = untangle_by_continuation<d>(in, what_is_left_after(first, options), protection, rest,
-                                                            first, &continued_phantoms);
+  Untangling_result continued = untangle_by_continuation<d>(in, what_is_left_after(first, options), protection,
+                                                            kind.builds_phantoms(), rest, first, &continued_phantoms);
   if(continued.status == Untangling_status::INVALID_INPUT || has_fewer_defects(first, continued)) {
     in.positions = first_map;   // the first result was the better one
     add_work(first, continued);
@@ -206,6 +206,7 @@ Untangling_result then_by_continuation(Untangling_input<d>& in, const std::vecto
 
 template <int d>
 Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Problem_kind<d>& kind,
                                                          const Protection_request<d>& protection,
                                                          const std::vector<Eigen::Matrix<double, d, 1>>& rest,
                                                          Phantom_elements<d>* phantoms_used);
@@ -213,43 +214,41 @@ Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in
 /// The run of `untangle` below, whose result may still be worse than its input.
 template <int d>
 Untangling_result untangle_as_asked(Untangling_input<d>& in, const Untangling_options& options,
-                                    const Protection_request<d>& protection, Phantom_elements<d>* phantoms_used)
+                                    const Problem_kind<d>& kind, const Protection_request<d>& protection,
+                                    Phantom_elements<d>* phantoms_used)
 {
   std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest;
-  // (the rest of a seamless problem is a 3D surface, not a start in the plane)
-  if(options.continuation != Continuation::NEVER && !in.has_links()) rest = continuation_start<d>(in);
-  // With every boundary vertex fixed there is no k-covering trap to avoid,
-  // and on such problems (CuboidBlocks) the continuation did not rescue any
-  // case the direct untangling failed: AUTOMATIC leaves them to it.
+  if(kind.continuation_may_apply(options)) rest = continuation_start<d>(in);
   const bool automatic = options.continuation == Continuation::AUTOMATIC;
-  if(!rest) return untangle_directly_or_from_convex_start<d>(in, options, protection, phantoms_used);
-  if(automatic && !has_free_boundary_vertex<d>(in)) return untangle_directly<d>(in, options, protection, phantoms_used);
+  if(!rest) return untangle_directly_or_from_convex_start<d>(in, options, kind, protection, phantoms_used);
+  if(automatic && !kind.automatic_continuation_applies())
+    return untangle_directly<d>(in, options, protection, phantoms_used);
   if(!automatic)
-    return untangle_by_continuation<d>(in, options, protection, *rest, input_figures<d>(in, options), phantoms_used);
-  if constexpr(d == 3) {
-    // Where the carried start fails, the continuation follows at once: a
-    // direct run from the given map is a bigger jump still.  Two Kuhn
-    // cavities turned 150°: the carried start ends with every element
-    // positive but stars covered twice (no phantom), the direct run then
-    // was still tangled after 17.7 s, and the continuation untangled the
-    // problem in 1 s.
-    const auto given = in.positions;
-    if(std::optional<Untangling_result> carried = untangle_from_carried_start<d>(in, options, protection, *rest)) {
-      if(!leaves_room_for_a_fallback(*carried, options)) {
-        if(phantoms_used) *phantoms_used = Phantom_elements<d>();
-        return *carried;
-      }
-      return then_by_continuation<d>(in, given, *carried, Phantom_elements<d>(), options, protection, *rest,
-                                     phantoms_used);
+    return untangle_by_continuation<d>(in, options, protection, kind.builds_phantoms(), *rest,
+                                       input_figures<d>(in, options), phantoms_used);
+  // Where the carried start fails, the continuation follows at once: a
+  // direct run from the given map is a bigger jump still.  Two Kuhn
+  // cavities turned 150°: the carried start ends with every element
+  // positive but stars covered twice (no phantom), the direct run then
+  // was still tangled after 17.7 s, and the continuation untangled the
+  // problem in 1 s.
+  const auto given = in.positions;
+  if(std::optional<Untangling_result> carried = untangle_from_carried_start<d>(in, options, kind, protection, *rest)) {
+    if(!leaves_room_for_a_fallback(*carried, options)) {
+      if(phantoms_used) *phantoms_used = Phantom_elements<d>();
+      return *carried;
     }
+    return then_by_continuation<d>(in, given, *carried, Phantom_elements<d>(), options, kind, protection, *rest,
+                                   phantoms_used);
   }
-  return untangle_directly_then_by_continuation<d>(in, options, protection, *rest, phantoms_used);
+  return untangle_directly_then_by_continuation<d>(in, options, kind, protection, *rest, phantoms_used);
 }
 
 /// The automatic policy: the direct untangling first, then, where it does
 /// not end locally invertible, the continuation from `rest`.
 template <int d>
 Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in, const Untangling_options& options,
+                                                         const Problem_kind<d>& kind,
                                                          const Protection_request<d>& protection,
                                                          const std::vector<Eigen::Matrix<double, d, 1>>& rest,
                                                          Phantom_elements<d>* phantoms_used)
@@ -275,14 +274,15 @@ Untangling_result untangle_directly_then_by_continuation(Untangling_input<d>& in
   Untangling_options direct = with_share_of_time(options, 2. / 3);
   direct.max_outer_iterations = std::max<std::size_t>(options.max_outer_iterations / 5, 1);
   if(d == 3) direct.max_energy_evaluations = direct_run_evaluations(in.elements.size());
-  direct.give_up_on_stall = d == 3 && !protection.supplied && protection.enabled && has_free_boundary_vertex<d>(in);
+  direct.give_up_on_stall = kind.direct_run_gives_up_on_stall();
   Phantom_elements<d> direct_phantoms;
   Untangling_result first = untangle_directly<d>(in, direct, protection, &direct_phantoms);
   if(!leaves_room_for_a_fallback(first, options)) {
     if(phantoms_used) *phantoms_used = std::move(direct_phantoms);
     return first;
   }
-  return then_by_continuation<d>(in, given, first, std::move(direct_phantoms), options, protection, rest, phantoms_used);
+  return then_by_continuation<d>(in, given, first, std::move(direct_phantoms), options, kind, protection, rest,
+                                 phantoms_used);
 }
 
 /// Puts the input map `given` back into `in` when it has fewer defects than
@@ -325,19 +325,18 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
 /// and targets that are all degenerate (a rest that gives no shape).
 /// Throws std::invalid_argument naming the elements or vertex.
 template <int d>
-void validate_stars(const Untangling_input<d>& in)
+void validate_stars(const Untangling_input<d>& in, const Problem_kind<d>& kind)
 {
-  // The corners of cells overlap by design: no star of theirs is checked.
-  if(in.has_cells() && in.number_of_mesh_elements() % in.corners_per_cell != 0)
+  if(!kind.has_simplex_facets() && in.number_of_mesh_elements() % in.corners_per_cell != 0)
     throw std::invalid_argument(std::to_string(in.number_of_mesh_elements()) + " corner simplices do not make whole "
                                 "cells of " + std::to_string(in.corners_per_cell));
-  if(!in.has_cells()) validate_manifold_facets<d>(in);
+  if(kind.has_simplex_facets()) validate_manifold_facets<d>(in);
   std::size_t degenerate = 0;
   const std::vector<int> orientation = target_orientations<d>(in, &degenerate);
   if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
     throw std::invalid_argument("every target simplex is degenerate (flat, or nearly so): the rest gives no shape to "
                                 "untangle toward");
-  if(in.has_cells() || in.has_links()) return;   // (a seamless surface's stars: checked where its links are made)
+  if(!kind.has_checkable_stars()) return;
   // (the stars' combinatorics only: the map is checked after the run)
   const std::size_t m = in.number_of_mesh_elements();
   const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + m);
@@ -407,22 +406,16 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   const auto start = std::chrono::steady_clock::now();
   Untangling_options timed = options;
   timed.deadline = std::min(options.deadline, deadline_after(options.max_seconds));
+  std::optional<Problem_kind<d>> kind;
   try {
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
-    if(in.has_cells() && options.refinement)
-      throw std::invalid_argument("refinement splits the edges of simplices: it is not offered for cells");
-    if(in.has_links() && options.refinement)
-      throw std::invalid_argument("refinement is not offered for seamless parameterizations (its new vertices "
-                                  "would need wedges of their own)");
     CGAL_MESH_UNTANGLING_STAGE("untangle: start");
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
     CGAL_MESH_UNTANGLING_STAGE("validate_input");
-    validate_stars<d>(in);
+    kind.emplace(in, requested);   // once: the strategies below ask it
+    if(const std::string refused = kind->refusal(options); !refused.empty()) throw std::invalid_argument(refused);
+    validate_stars<d>(in, *kind);
     CGAL_MESH_UNTANGLING_STAGE("validate_stars");
-    if(in.has_cells() && requested.supplied)
-      throw std::invalid_argument("phantom elements protect vertex stars of simplices, not the corners of cells");
-    if(in.has_links() && requested.supplied)
-      throw std::invalid_argument("phantom elements are not offered for seamless parameterizations");
   } catch(const std::invalid_argument& e) {
     Untangling_result invalid;
     invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
@@ -432,29 +425,24 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     return invalid;
   }
   std::vector<Eigen::Matrix<double, d, 1>> given = in.positions;
-  // Phantoms are built on vertex stars, which the overlapping corners of
-  // cells do not form: cells go unprotected (see Untangling_input).
-  Protection_request<d> unprotected;
-  unprotected.enabled = false;
-  // Nor does a seamless one get them: built on the stars of the cut mesh,
-  // they would protect a wedge's sector as a boundary star (see the manual).
-  const Protection_request<d>& protection = in.has_cells() || in.has_links() ? unprotected : requested;
+  const Protection_request<d> protection = kind->protection(requested);
   Untangling_result r;
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   try {
     const Untangling_options metered = with_progress(timed, progress);
-    r = untangle_as_asked<d>(in, metered, protection, phantoms_used);
+    r = untangle_as_asked<d>(in, metered, *kind, protection, phantoms_used);
     CGAL_MESH_UNTANGLING_STAGE("untangle_as_asked");
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
-    repair_locally_after<d>(in, given, metered, r);
+    if(kind->local_repair_applies()) repair_locally_after<d>(in, given, metered, r, kind->local_regions_apply());
     CGAL_MESH_UNTANGLING_STAGE("repair_locally_after");
     if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
-    if(options.refinement && !protection.supplied) {
+    if(kind->refinement_applies(options)) {
+      // (the refined mesh is of the same kind: its new vertices are interior and free)
       const auto rerun = [&](Untangling_input<d>& refined, const Untangling_options& o) {
         const std::vector<Eigen::Matrix<double, d, 1>> start = refined.positions;
-        Untangling_result again = untangle_as_asked<d>(refined, o, protection, nullptr);
-        repair_locally_after<d>(refined, start, o, again);
+        Untangling_result again = untangle_as_asked<d>(refined, o, *kind, protection, nullptr);
+        repair_locally_after<d>(refined, start, o, again, kind->local_regions_apply());
         return again;
       };
       std::vector<Added_vertex> new_vertices;

@@ -93,6 +93,16 @@ Phantom_elements<d> build_phantom_elements_on(const Untangling_input<d>& in,
   return build_phantom_elements(on_geometry, summary, true);
 }
 
+/// Whether a run builds phantoms of its own under `request`: only where a
+/// boundary vertex is free (`has_free_boundary()`, asked last: it may have
+/// to find the boundary) can a star be covered twice without an inverted
+/// element, and supplied phantoms replace built ones.
+template <int d, typename Predicate>
+bool builds_phantoms(const Protection_request<d>& request, const Predicate& has_free_boundary)
+{
+  return !request.supplied && request.enabled && has_free_boundary();
+}
+
 /// Appends the phantoms that `request` calls for to `in` (mesh targets are
 /// filled with default ones first when there are none, since phantom targets
 /// are sized against them).  Throws std::invalid_argument on malformed
@@ -101,8 +111,7 @@ template <int d>
 Protection_summary protect_boundary(Untangling_input<d>& in, const Protection_request<d>& request)
 {
   Protection_summary summary;
-  const bool build = !request.supplied && request.enabled && has_free_boundary_vertex<d>(in);
-  if(!build && !request.supplied) return summary;
+  if(!request.supplied && !builds_phantoms(request, [&] { return has_free_boundary_vertex<d>(in); })) return summary;
   if(in.targets.empty()) in.targets = default_targets<d>(in);
   const Phantom_elements<d> phantoms = request.supplied ? *request.supplied : build_phantom_elements(in, summary);
   append_phantom_elements<d>(in, phantoms);

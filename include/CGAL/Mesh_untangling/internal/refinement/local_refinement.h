@@ -135,7 +135,8 @@ bool refine_without(const Untangling_input<d>& in, const std::vector<Eigen::Matr
   return true;
 }
 
-/// The refinement of the file's comment on `in`, the map a run `r` from
+/// The refinement of the file's comment on `in` (a problem to which it
+/// applies: Problem_kind::refinement_applies), the map a run `r` from
 /// `given` left with inverted elements; `rerun(problem)` untangles a refined
 /// problem from its positions with the run's fallbacks and returns its
 /// result.  On success `in` (and `given`) become the refined problem, `r`
@@ -146,9 +147,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
                                      const Untangling_options& options, Untangling_result& r,
                                      std::vector<Added_vertex>& added, const Rerun& rerun)
 {
-  if(!options.refinement || r.status != Untangling_status::INVERTED_ELEMENTS_LEFT || in.targets.empty() ||
-     in.phantom_elements > 0 || has_free_boundary_vertex<d>(in))
-    return;
+  if(r.status != Untangling_status::INVERTED_ELEMENTS_LEFT) return;
   const auto start = std::chrono::steady_clock::now();
   // Each untangling of a refined problem has the caller's eps-step budget
   // (the fixed-connectivity run may have spent it); the time is shared.

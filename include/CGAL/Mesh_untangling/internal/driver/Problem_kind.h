@@ -1,0 +1,132 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The kind of an untangling problem, decided once from its input and the
+// caller's request, and the one place that says which strategy of the
+// driver applies to which kind: the other files of the driver ask it and
+// never test the input's kind themselves.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_PROBLEM_KIND_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_PROBLEM_KIND_H
+
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/boundary_protection.h>
+
+#include <algorithm>
+#include <string>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+template <int d>
+class Problem_kind
+{
+public:
+  /// The kind of `in` (a valid input, without phantoms) under `request`.
+  Problem_kind(const Untangling_input<d>& in, const Protection_request<d>& request)
+    : cells_(in.has_cells()), seamless_(in.has_links()), free_boundary_(has_free_boundary_vertex<d>(in)),
+      targets_given_(!in.targets.empty()),
+      anything_fixed_(std::find(in.is_fixed.begin(), in.is_fixed.end(), true) != in.is_fixed.end()),
+      phantoms_supplied_(request.supplied.has_value()),
+      builds_phantoms_(takes_phantoms() && internal::builds_phantoms(request, [this] { return free_boundary_; }))
+  {}
+
+  /// Why this kind of problem cannot be run as `options` and the request
+  /// ask, in words; empty when it can.
+  std::string refusal(const Untangling_options& options) const
+  {
+    if(cells_ && options.refinement) return "refinement splits the edges of simplices: it is not offered for cells";
+    if(seamless_ && options.refinement)
+      return "refinement is not offered for seamless parameterizations (its new vertices would need wedges of their "
+             "own)";
+    if(cells_ && phantoms_supplied_)
+      return "phantom elements protect vertex stars of simplices, not the corners of cells";
+    if(seamless_ && phantoms_supplied_) return "phantom elements are not offered for seamless parameterizations";
+    return "";
+  }
+
+  // --- The input's stars, as validation sees them.
+
+  /// Whether every facet must be shared by at most two elements: the
+  /// corners of cells overlap by design.
+  bool has_simplex_facets() const { return !cells_; }
+
+  /// Whether the vertex stars and edge fans of the elements are checked
+  /// for being disks before the run (a seamless surface's stars are
+  /// checked where its links are made; cells' corners form no stars).
+  bool has_checkable_stars() const { return !cells_ && !seamless_; }
+
+  // --- Which strategy applies.
+
+  /// Phantom elements are built on vertex stars, which the overlapping
+  /// corners of cells do not form; built on the stars of a cut mesh, they
+  /// would protect a seam's wedge as a boundary star (see the manual).
+  bool takes_phantoms() const { return !cells_ && !seamless_; }
+
+  /// The protection a run of this kind uses: the request, or none.
+  Protection_request<d> protection(const Protection_request<d>& request) const
+  {
+    if(takes_phantoms()) return request;
+    Protection_request<d> none;
+    none.enabled = false;
+    return none;
+  }
+
+  /// Whether the runs build phantoms of their own (a free boundary, the
+  /// caller supplied none and did not turn them off).
+  bool builds_phantoms() const { return builds_phantoms_; }
+
+  /// Whether a failed 2D run may start again from the convex embedding of a
+  /// disk (tutte_start.h): nothing fixed, triangles, no seams.
+  bool convex_start_applies() const { return d == 2 && !anything_fixed_ && !cells_ && !seamless_; }
+
+  /// Whether a motion of the fixed vertices from a rest shape may be
+  /// followed (continuation.h); the rest must exist too (continuation_start).
+  /// The rest of a seamless problem is a 3D surface, not a start in the plane.
+  bool continuation_may_apply(const Untangling_options& options) const
+  {
+    return options.continuation != Continuation::NEVER && !seamless_ && anything_fixed_;
+  }
+
+  /// Whether the automatic policy follows the motion: with every boundary
+  /// vertex fixed there is no k-covering trap to avoid, and on such problems
+  /// (CuboidBlocks) the continuation rescued no case the direct untangling failed.
+  bool automatic_continuation_applies() const { return free_boundary_; }
+
+  /// Whether the free vertices may start carried along by the rigid groups
+  /// of fixed vertices (carried_motion.h): in 3D.
+  bool carried_start_applies() const { return d == 3; }
+
+  /// Whether a direct run that a continuation follows gives up at its first
+  /// stall: in 3D, with phantoms built in the rest shape, a stall is the
+  /// sign that they block it.
+  bool direct_run_gives_up_on_stall() const { return d == 3 && builds_phantoms(); }
+
+  /// Whether a run that leaves inverted elements may go on with the local
+  /// repair (local_repair.h): the boundary fixed, targets to repair toward
+  /// (supplied phantoms are sized against default targets, which the mesh
+  /// keeps after the run: protect_boundary).
+  bool local_repair_applies() const { return (targets_given_ || phantoms_supplied_) && !free_boundary_; }
+
+  /// Whether the repair may cut regions out of the mesh: a region of a
+  /// seamless problem would lose its links (it gets the patient rerun).
+  bool local_regions_apply() const { return !seamless_; }
+
+  /// Whether `options` ask for refinement and it applies: the boundary
+  /// fixed, targets given (they are split with the edges), and no supplied
+  /// phantoms (they name the vertices of the unrefined mesh).
+  bool refinement_applies(const Untangling_options& options) const
+  {
+    return options.refinement && !phantoms_supplied_ && targets_given_ && !free_boundary_;
+  }
+
+private:
+  bool cells_, seamless_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
+};
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_PROBLEM_KIND_H
