@@ -200,7 +200,8 @@ void child_run(int fd, const Family_instance& instance, double time_limit, int t
     out << j.vertices << " " << j.elements << " " << j.fixed << " " << j.seconds << " " << j.inverted_before << " "
         << j.inverted << " " << j.overwound_interior_vertices << " " << j.overwound_boundary_vertices << " "
         << j.overwound_edges << " " << j.fixed_moved << " " << j.boundary_crossings << " " << j.phantoms << " "
-        << j.continuation_steps << " " << j.eps_steps << " " << j.final_epsilon << " " << j.input_returned << " "
+        << j.continuation_steps << " " << j.continuation_motion << " " << j.eps_steps << " " << j.final_epsilon << " "
+        << j.input_returned << " "
         << j.locally_invertible << " " << j.boundary_simple;
     send("figures", out.str());
     send("status", j.status);
@@ -299,7 +300,8 @@ Outcome run_in_child(const Family_instance& instance, double time_limit, int thr
     Judgement& j = o.j;
     in >> j.vertices >> j.elements >> j.fixed >> j.seconds >> j.inverted_before >> j.inverted >>
         j.overwound_interior_vertices >> j.overwound_boundary_vertices >> j.overwound_edges >> j.fixed_moved >>
-        j.boundary_crossings >> j.phantoms >> j.continuation_steps >> j.eps_steps >> j.final_epsilon >>
+        j.boundary_crossings >> j.phantoms >> j.continuation_steps >> j.continuation_motion >> j.eps_steps >>
+        j.final_epsilon >>
         j.input_returned >> j.locally_invertible >> j.boundary_simple;
     j.overwound_vertices = j.overwound_interior_vertices + j.overwound_boundary_vertices;
     o.ran = bool(in);
@@ -331,7 +333,10 @@ std::string instance_line(const Outcome& o, const Family_instance& instance)
       << j.overwound_boundary_vertices << " boundary, over-wound edges " << j.overwound_edges << ", fixed moved "
       << j.fixed_moved << ", boundary crossings " << j.boundary_crossings
       << (instance.boundary_should_be_simple ? " (should be 0)" : " (not judged)") << "; " << j.phantoms
-      << " phantoms, " << j.continuation_steps << " continuation steps, " << j.eps_steps << " eps steps, final eps "
+      << " phantoms, " << j.continuation_steps << " continuation steps"
+      << (j.continuation_motion > 0 && j.continuation_motion < 1
+            ? " (to motion " + fixed_decimals(j.continuation_motion, 4) + ")" : std::string())
+      << ", " << j.eps_steps << " eps steps, final eps "
       << j.final_epsilon << (j.input_returned ? ", input returned" : "") << "; " << fixed_decimals(j.seconds, 2)
       << " s, " << fixed_decimals(o.peak_mib, 0) << " MiB; " << o.status;
   return out.str();

@@ -458,6 +458,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["final_epsilon"] = r.final_epsilon;
   j["continuation"] = args.continuation;
   j["continuation_steps"] = r.continuation_steps;
+  j["continuation_motion"] = r.continuation_motion;
   j["input_returned"] = r.input_returned;
   j["refinement"] = args.refine;
   j["vertices_added"] = r.vertices_added;
@@ -695,7 +696,8 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
     if(!verdict.locally_invertible)
       std::fprintf(stderr, "why: %s\n", r.message.empty() ? MU::to_string(r.status).c_str() : r.message.c_str());
     if(r.continuation_steps > 0)
-      std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible\n", r.continuation_steps);
+      std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible (%.1f %% of the motion)\n",
+                   r.continuation_steps, 100 * r.continuation_motion);
     if(r.vertices_added > 0)
       std::fprintf(stderr, "refinement: %zu vertices added (interior edges split at their midpoints)\n",
                    r.vertices_added);

@@ -69,6 +69,7 @@ class Result:
     final_energy: float
     final_epsilon: float
     continuation_steps: int
+    continuation_motion: float
     outer_iterations: int
     inner_iterations: int
     energy_evaluations: int

@@ -155,8 +155,26 @@ void check_relaxed_locked_ball()
 
 } // namespace
 
+/// A step short of the end that fails a second time blocks the
+/// continuation; a step to the end never does (the halving floor ends
+/// that), nor do failures at other motions.
+void check_blocked_motion()
+{
+  const double tolerance = 1. / 512;   // the smallest increment of 8 steps
+  std::vector<double> failed;
+  CHECK(!MI::fails_again(failed, 0.5, tolerance));
+  CHECK(!MI::fails_again(failed, 0.375, tolerance));
+  CHECK(!MI::fails_again(failed, 1, tolerance));
+  CHECK(!MI::fails_again(failed, 1, tolerance));
+  CHECK(!MI::fails_again(failed, 0.5 - tolerance, tolerance));   // (the halved steps creep toward 0.5)
+  CHECK(MI::fails_again(failed, 0.5, tolerance));
+  CHECK(MI::fails_again(failed, 0.375 + 1e-12, tolerance));   // (1/3 of a motion is not exact in binary)
+  CHECK(failed.size() == 7);
+}
+
 int main()
 {
+  check_blocked_motion();
   check_carried_bar("twist", 180);
   check_carried_bar("bend", 90);
   check_untangled_from_carried_start();

@@ -148,6 +148,28 @@ int main(int argc, char** argv)
       CHECK_MESSAGE(j.eps_steps <= 10, i.name << ": " << j.eps_steps << " eps steps");
     }
   CHECK_MESSAGE(joint_found || real.empty(), "real-meshes has no instance joint-tetgen-ends-turned45");
+  // The one instance of the benchmark whose continuation is blocked (two
+  // cavities turned 180° with about one element between a wall and the free
+  // boundary: steps short of the end fail twice at motion 0.984): the
+  // result says how far the continuation got.  (TetGen's meshes: with TetGen.)
+  bool blocked_found = false, with_tetgen = false;
+  for(const Family_description& f : free_boundary_families()) {
+    if(f.name != "cavities-tetgen") continue;
+    with_tetgen = true;
+    for(const Family_instance& i : free_boundary_family(f.name, Family_size::DEFAULT))
+      if(i.name == "cavities-tetgen-h1-180deg") {
+        blocked_found = true;
+        Mesh_file mesh = i.make();
+        const Judgement j = untangle_and_judge(mesh, 120);
+        std::printf("%-48s %s, continuation to motion %.4f, %zu eps steps, %.2f s\n", i.name.c_str(),
+                    j.locally_invertible ? "locally invertible" : "not locally invertible", j.continuation_motion,
+                    j.eps_steps, j.seconds);
+        CHECK_MESSAGE(j.fixed_moved == 0, i.name << ": fixed vertices moved");
+        CHECK_MESSAGE(j.locally_invertible || (j.continuation_motion > 0.9 && j.continuation_motion < 1),
+                      i.name << ": " << j.status << ", continuation to motion " << j.continuation_motion);
+      }
+  }
+  CHECK_MESSAGE(blocked_found || !with_tetgen, "cavities-tetgen has no instance cavities-tetgen-h1-180deg");
 
   // every family has instances (the real meshes: with their data), and the names are unique
   std::vector<std::string> names;

@@ -936,6 +936,7 @@ Judgement untangle_and_judge(Mesh_file& mesh, double max_seconds,
   j.inverted_before = r.inverted_before;
   j.phantoms = r.number_of_phantom_elements;
   j.continuation_steps = r.continuation_steps;
+  j.continuation_motion = r.continuation_motion;
   j.eps_steps = r.outer_iterations;
   j.final_epsilon = r.final_epsilon;
   j.input_returned = r.input_returned;

@@ -166,6 +166,7 @@ struct Judgement
   std::size_t boundary_crossings = 0;          ///< intersecting pairs of boundary facets of the image
   std::size_t phantoms = 0, continuation_steps = 0, eps_steps = 0;
   double final_epsilon = 0;
+  double continuation_motion = 0;              ///< of the continuation's last locally invertible map (Untangling_result)
   bool input_returned = false;
   bool locally_invertible = false;             ///< no inverted element, no over-wound star or edge fan
   bool boundary_simple = false;

@@ -95,6 +95,11 @@ struct Untangling_result
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)
   std::size_t continuation_steps = 0;
+  /// the fraction of the fixed vertices' motion that the continuation's
+  /// last locally invertible map reached: 1 when it reached the end, below
+  /// 1 when it was blocked or stopped short (the last step then jumped from
+  /// there), 0 when it did not run
+  double continuation_motion = 0;
   std::size_t outer_iterations = 0;    ///< ε steps
   std::size_t inner_iterations = 0;    ///< solver iterations, all ε steps together
   std::size_t energy_evaluations = 0;  ///< evaluations of F (with or without gradient)

@@ -171,6 +171,7 @@ std::optional<Untangling_result> untangle_from_carried_start(Untangling_input<d>
   r.inverted_before = given.inverted_before;
   r.min_scaled_det_before = given.min_scaled_det_before;
   r.continuation_steps = reached_goal(r.status) ? 1 : 0;
+  r.continuation_motion = reached_goal(r.status) ? 1 : 0;
   in.positions = steps.map();
   return r;
 }
@@ -196,6 +197,7 @@ Untangling_result then_by_continuation(Untangling_input<d>& in, const std::vecto
     in.positions = first_map;   // the first result was the better one
     add_work(first, continued);
     first.continuation_steps = continued.continuation_steps;
+    first.continuation_motion = continued.continuation_motion;
     if(phantoms_used) *phantoms_used = std::move(first_phantoms);
     return first;
   }
@@ -361,6 +363,9 @@ inline std::string what_is_left(const Untangling_result& r)
   if(r.input_defects + r.input_defect_stars > 0)
     text += "; " + std::to_string(r.input_defects) + " inverted elements and " + std::to_string(r.input_defect_stars) +
             " over-wound stars have only fixed vertices";
+  if(r.continuation_motion > 0 && r.continuation_motion < 1)
+    text += "; the continuation from the rest shape got " + std::to_string(int(100 * r.continuation_motion)) +
+            " % of the fixed vertices' motion through locally invertible maps, the rest in one step";
   return text + ")";
 }
 
