@@ -3,7 +3,9 @@
 # built from another commit, on a fixed list of cases, in one run on the
 # same machine, the two binaries alternating on each case.  Prints a
 # markdown table with both library times (the report's "seconds"), wall
-# times and peak memory, and the ratios new / base.  Not a ctest test: the
+# times and peak memory, the ratios new / base, and whether the two wrote
+# the same output file byte for byte (a change meant to keep the results
+# says "same" on every case).  Not a ctest test: the
 # machines are shared and noisy, so figures are reported, never enforced.
 #
 # usage: benchmark/Mesh_untangling/compare_commits.sh [options] BASE_COMMIT
@@ -95,13 +97,14 @@ if want cuboidblocks; then
   else echo "compare_commits.sh: $data/cuboidblocks absent: CuboidBlocks skipped" >&2; fi
 fi
 
-# 3. The runs.  run BINARY ARGUMENTS: "library_s wall_s peak_MiB exit status".
+# 3. The runs.  run BINARY TAG ARGUMENTS: "library_s wall_s peak_MiB exit status";
+# the output goes to $work/TAG.out.vtk (or .input).
 figure() { sed -nE "s/^  \"$2\": (.*)\$/\1/p" "$1" | sed -E 's/,$//; s/^"(.*)"$/\1/'; }
 run() {
-  local binary=$1 rc=0; shift
-  rm -f "$work/run.json" "$work/run.out.vtk" "$work/run.out.input"
-  local out=$work/run.out.vtk
-  [[ "$1" == *.input ]] && out=$work/run.out.input
+  local binary=$1 tag=$2 rc=0; shift 2
+  rm -f "$work/run.json" "$work/$tag.out.vtk" "$work/$tag.out.input"
+  local out=$work/$tag.out.vtk
+  [[ "$1" == *.input ]] && out=$work/$tag.out.input
   /usr/bin/time -f "%e %M" -o "$work/run.time" "$binary" "$@" -o "$out" --report "$work/run.json" \
     --threads "$threads" --time-limit "$time_limit" --quiet > /dev/null 2>&1 || rc=$?
   local seconds=nan status=none
@@ -117,18 +120,23 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if(a == "nan" || b == "nan" || b + 0 
 echo "new: $(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet HEAD || echo '+changes'), base: $sha;" \
      "$threads thread(s), best of $repeat alternating runs, $(date -u +%Y-%m-%d)"
 echo
-echo "| case | base s | new s | new/base | base wall | new wall | base MiB | new MiB | base exit | new exit |"
-echo "|:--|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+echo "| case | base s | new s | new/base | base wall | new wall | base MiB | new MiB | base exit | new exit | output |"
+echo "|:--|--:|--:|--:|--:|--:|--:|--:|--:|--:|:--|"
 for entry in "${list[@]}"; do
   name=${entry%%|*}
   read -r -a arguments <<< "${entry#*|}"
   best_base=(nan nan 0 - -) best_new=(nan nan 0 - -)
   for ((r = 0; r < repeat; ++r)); do
-    read -r -a b <<< "$(run "$BASE" "${arguments[@]}")"
-    read -r -a n <<< "$(run "$NEW" "${arguments[@]}")"
+    read -r -a b <<< "$(run "$BASE" base "${arguments[@]}")"
+    read -r -a n <<< "$(run "$NEW" new "${arguments[@]}")"
     [ "$(better "${b[0]}" "${best_base[0]}")" = "${b[0]}" ] && best_base=("${b[@]}")
     [ "$(better "${n[0]}" "${best_new[0]}")" = "${n[0]}" ] && best_new=("${n[@]}")
   done
+  same=differs
+  ls "$work"/base.out.* "$work"/new.out.* > /dev/null 2>&1 || same="no output"
+  for extension in vtk input; do
+    [ -f "$work/base.out.$extension" ] && cmp -s "$work/base.out.$extension" "$work/new.out.$extension" && same=same
+  done
   echo "| $name | ${best_base[0]} | ${best_new[0]} | $(ratio "${best_new[0]}" "${best_base[0]}") |" \
-       "${best_base[1]} | ${best_new[1]} | ${best_base[2]} | ${best_new[2]} | ${best_base[3]} | ${best_new[3]} |"
+       "${best_base[1]} | ${best_new[1]} | ${best_base[2]} | ${best_new[2]} | ${best_base[3]} | ${best_new[3]} | $same |"
 done

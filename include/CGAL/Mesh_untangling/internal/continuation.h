@@ -21,6 +21,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_CONTINUATION_H
 
 #include <CGAL/Mesh_untangling/internal/carried_motion.h>
+#include <CGAL/Mesh_untangling/internal/driver/Run.h>
 #include <CGAL/Mesh_untangling/internal/fixed_vertex_motion.h>
 #include <CGAL/Mesh_untangling/internal/rigid_relaxation.h>
 #include <CGAL/Mesh_untangling/internal/staged_untangling.h>
@@ -135,24 +136,6 @@ std::optional<std::vector<Eigen::Matrix<double, d, 1>>> continuation_start(const
   if constexpr(d == 2)
     if(!rest) rest = glued_flat_rest(in);
   return rest;
-}
-
-/// Fewer inverted elements first, then fewer over-wound stars.
-inline bool has_fewer_defects(const Untangling_result& a, const Untangling_result& b)
-{
-  const auto defects = [](const Untangling_result& r) {
-    return std::make_pair(r.inverted_after, r.overwound_vertices_after + r.overwound_edges_after);
-  };
-  return defects(a) < defects(b);
-}
-
-/// Adds the work of `earlier` (another run on the same problem) to `r`.
-inline void add_work(Untangling_result& r, const Untangling_result& earlier)
-{
-  r.outer_iterations += earlier.outer_iterations;
-  r.inner_iterations += earlier.inner_iterations;
-  r.energy_evaluations += earlier.energy_evaluations;
-  r.seconds += earlier.seconds;
 }
 
 /// The steps of one continuation and what they share: the problem, the

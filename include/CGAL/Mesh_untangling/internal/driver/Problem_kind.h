@@ -30,7 +30,9 @@ public:
       anything_fixed_(std::find(in.is_fixed.begin(), in.is_fixed.end(), true) != in.is_fixed.end()),
       phantoms_supplied_(request.supplied.has_value()),
       builds_phantoms_(takes_phantoms() && internal::builds_phantoms(request, [this] { return free_boundary_; }))
-  {}
+  {
+    no_protection_.enabled = false;
+  }
 
   /// Why this kind of problem cannot be run as `options` and the request
   /// ask, in words; empty when it can.
@@ -65,12 +67,9 @@ public:
   bool takes_phantoms() const { return !cells_ && !seamless_; }
 
   /// The protection a run of this kind uses: the request, or none.
-  Protection_request<d> protection(const Protection_request<d>& request) const
+  const Protection_request<d>& protection(const Protection_request<d>& request) const
   {
-    if(takes_phantoms()) return request;
-    Protection_request<d> none;
-    none.enabled = false;
-    return none;
+    return takes_phantoms() ? request : no_protection_;
   }
 
   /// Whether the runs build phantoms of their own (a free boundary, the
@@ -123,6 +122,7 @@ public:
 
 private:
   bool cells_, seamless_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
+  Protection_request<d> no_protection_;
 };
 
 } // namespace internal
