@@ -69,7 +69,8 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     r = climb_the_ladder<d>(in, given, with_progress(timed, progress), *kind, protection, progress, phantoms_used,
                             added);
     CGAL_MESH_UNTANGLING_STAGE("climb_the_ladder");
-    if(progress.cancelled()) return cancelled_run<d>(in, given, options, r, phantoms_used);
+    // (a refinement that succeeded has changed the mesh: its result stands)
+    if(progress.cancelled() && r.vertices_added == 0) return cancelled_run<d>(in, given, options, r, phantoms_used);
   } catch(const std::bad_alloc&) {
     throw;   // the caller's to handle, as for any allocation
   } catch(const std::exception& e) {
