@@ -206,6 +206,6 @@ int main()
   CHECK_MESSAGE(b.energy_evaluations >= 200 && b.energy_evaluations <= 260, b.energy_evaluations << " evaluations");
   CHECK_MESSAGE(b.status == CGAL::Mesh_untangling::Untangling_status::INVERTED_ELEMENTS_LEFT,
                 CGAL::Mesh_untangling::to_string(b.status));
-  CHECK(MI::leaves_room_for_a_fallback(b, MI::Untangling_options()));
+  CHECK(MI::Budget(MI::Untangling_options()).leaves_room_after(b));
   return test::exit_code();
 }

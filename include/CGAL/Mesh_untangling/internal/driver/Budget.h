@@ -39,15 +39,6 @@ inline std::size_t direct_run_evaluations(std::size_t elements)
                                                         double(std::max<std::size_t>(elements, 1))));
 }
 
-/// Whether a run that ended with `r` may still hand its remaining budget to
-/// a fallback: it failed, on valid input, neither stopped nor out of budget.
-inline bool leaves_room_for_a_fallback(const Untangling_result& r, const Untangling_options& options)
-{
-  const bool out_of_budget = out_of_time(options) || r.outer_iterations >= options.max_outer_iterations;
-  return !reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT &&
-         r.status != Untangling_status::STOPPED_BY_CALLBACK && !out_of_budget;
-}
-
 class Budget
 {
 public:
@@ -56,8 +47,14 @@ public:
   /// The whole budget, for a strategy that runs alone.
   const Untangling_options& whole() const { return options_; }
 
-  /// Whether a fallback may follow the run that ended with `r`.
-  bool leaves_room_after(const Untangling_result& r) const { return leaves_room_for_a_fallback(r, options_); }
+  /// Whether a fallback may follow the run that ended with `r`: it failed,
+  /// on valid input, neither stopped nor out of budget.
+  bool leaves_room_after(const Untangling_result& r) const
+  {
+    const bool out_of_budget = out_of_time(options_) || r.outer_iterations >= options_.max_outer_iterations;
+    return !reached_goal(r.status) && r.status != Untangling_status::INVALID_INPUT &&
+           r.status != Untangling_status::STOPPED_BY_CALLBACK && !out_of_budget;
+  }
 
   /// What is left after the runs of `spent`: their eps steps are taken off
   /// (the clock is shared).
