@@ -9,6 +9,7 @@
 #include "test_common.h"
 
 #include "generators.h"
+#include "mesh_file_arrays.h"
 
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
@@ -33,23 +34,8 @@ using Triangles = std::vector<std::array<std::size_t, 3>>;
 using Tets = std::vector<std::array<std::size_t, 4>>;
 using Edge = std::array<std::size_t, 2>;
 
-template <int d>
-std::vector<std::array<double, d>> points_of(const std::vector<std::array<double, 3>>& points)
-{
-  std::vector<std::array<double, d>> p(points.size());
-  for(std::size_t v = 0; v < p.size(); ++v)
-    for(int c = 0; c < d; ++c) p[v][c] = points[v][c];
-  return p;
-}
-
-template <int d>
-std::vector<std::array<std::size_t, d + 1>> simplices_of(const tools::Mesh_file& mesh)
-{
-  std::vector<std::array<std::size_t, d + 1>> s(mesh.simplices.size());
-  for(std::size_t k = 0; k < s.size(); ++k)
-    for(int i = 0; i <= d; ++i) s[k][i] = mesh.simplices[k][i];
-  return s;
-}
+using tools::points_of;
+using tools::simplices_of;
 
 /// The intersecting pairs found by testing every pair of boundary facets: what the box filter must not miss.
 template <std::size_t D>

@@ -15,6 +15,7 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include "mesh_file_arrays.h"
 #include "seamless_surface.h"
 
 #include <algorithm>
@@ -28,24 +29,6 @@ namespace Mesh_untangling_tools {
 namespace MU = CGAL::Mesh_untangling;
 
 namespace {
-
-template <int d>
-std::vector<std::array<std::size_t, d + 1>> simplices_of(const Mesh_file& mesh)
-{
-  std::vector<std::array<std::size_t, d + 1>> s(mesh.simplices.size());
-  for(std::size_t k = 0; k < s.size(); ++k)
-    for(int i = 0; i <= d; ++i) s[k][i] = mesh.simplices[k][i];
-  return s;
-}
-
-template <int d>
-std::vector<std::array<double, d>> points_of(const std::vector<std::array<double, 3>>& points)
-{
-  std::vector<std::array<double, d>> p(points.size());
-  for(std::size_t v = 0; v < p.size(); ++v)
-    for(int c = 0; c < d; ++c) p[v][c] = points[v][c];
-  return p;
-}
 
 template <int d>
 std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> cells_of(const Mesh_file& mesh)
