@@ -167,9 +167,9 @@ public:
   /// on `from`, where every phantom is positive.
   Untangling_result try_step(const std::vector<Vector>& from, double motion)
   {
-    Untangling_result r = run_step(from, from, motion, !build_phantoms_);
+    Untangling_result r = run_step(from, motion, build_phantoms_ ? Phantoms::OFF : Phantoms::ON, Step_budget::ONE_STEP);
     if(build_phantoms_ && !reached_goal(r.status) && !stop_requested_ && has_budget())
-      r = run_step(from, from, motion, true);
+      r = run_step(from, motion, Phantoms::ON, Step_budget::ONE_STEP);
     return r;
   }
 
@@ -177,7 +177,7 @@ public:
   /// phantoms: they are built on a valid map, which `predicted` need not be.
   Untangling_result try_predicted_step(const std::vector<Vector>& predicted, double motion)
   {
-    return run_step(predicted, predicted, motion, false);
+    return run_step(predicted, motion, Phantoms::OFF, Step_budget::ONE_STEP);
   }
 
   /// The last step: the fixed vertices at their given positions from `from`,
@@ -187,7 +187,8 @@ public:
   /// not the rest of the budget.
   Untangling_result finish_from(const std::vector<Vector>& from, bool blocked)
   {
-    Untangling_result r = run_step(from, from, 1., true, stop_requested_, !blocked);
+    const Step_budget budget = stop_requested_ ? Step_budget::NONE : blocked ? Step_budget::ONE_STEP : Step_budget::REST;
+    Untangling_result r = run_step(from, 1., Phantoms::ON, budget);
     if(stop_requested_ && !reached_goal(r.status)) r.status = Untangling_status::STOPPED_BY_CALLBACK;
     return r;
   }
@@ -235,11 +236,18 @@ public:
 
 private:
 
-  Untangling_options step_options(double motion, bool only_check, bool last_step)
+  /// Whether a step's energy has phantoms: built on its start map when the
+  /// problem builds its own, else the caller's (protection_).
+  enum class Phantoms { OFF, ON };
+  /// A step's eps steps: those of one step (eps_steps_per_step), the rest of
+  /// the budget (the last step), or none (the map is only checked).
+  enum class Step_budget { ONE_STEP, REST, NONE };
+
+  Untangling_options step_options(double motion, Step_budget budget)
   {
     Untangling_options o = options_;
-    o.max_outer_iterations = only_check ? 0 : eps_steps_left();
-    if(!last_step) o.max_outer_iterations = std::min(o.max_outer_iterations, eps_steps_per_step);
+    o.max_outer_iterations = budget == Step_budget::NONE ? 0 : eps_steps_left();
+    if(budget == Step_budget::ONE_STEP) o.max_outer_iterations = std::min(o.max_outer_iterations, eps_steps_per_step);
     o.give_up_on_stall = false;
     if(options_.callback)
       o.callback = [this, motion](const Untangling_step& s) {
@@ -251,18 +259,18 @@ private:
     return o;
   }
 
-  Untangling_result run_step(const std::vector<Vector>& from, const std::vector<Vector>& start, double motion,
-                             bool with_phantoms, bool only_check = false, bool last_step = false)
+  /// A step to `motion` whose free vertices start at `from`.
+  Untangling_result run_step(const std::vector<Vector>& from, double motion, Phantoms phantoms, Step_budget budget)
   {
-    Untangling_input<d> step = step_input(start, motion);
+    Untangling_input<d> step = step_input(from, motion);
     Protection_request<d> request = protection_;
-    if(build_phantoms_ && with_phantoms) {
+    if(build_phantoms_ && phantoms == Phantoms::ON) {
       Protection_summary unused;
       request.supplied = build_phantom_elements_on<d>(step, from, unused);
     }
-    request.enabled = request.enabled && with_phantoms;
+    request.enabled = request.enabled && phantoms == Phantoms::ON;
     used_ = Phantom_elements<d>();
-    Untangling_result r = untangle_directly<d>(step, step_options(motion, only_check, last_step), request, &used_);
+    Untangling_result r = untangle_directly<d>(step, step_options(motion, budget), request, &used_);
     add_work(work_, r);
     map_ = std::move(step.positions);
     return r;
