@@ -130,6 +130,19 @@ public:
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   bool out_of_time() const { return internal::out_of_time(options_); }
 
+  std::size_t eps_steps_left() const
+  { return options_.max_outer_iterations - (std::min)(steps_, options_.max_outer_iterations); }
+
+  /// Counts the work of a run outside the loop (a local repair between its
+  /// stages) against its eps-step budget and in its result.
+  void add_work_done_elsewhere(const Untangling_result& work)
+  {
+    steps_ += work.outer_iterations;
+    result_.outer_iterations += work.outer_iterations;
+    result_.inner_iterations += work.inner_iterations;
+    result_.energy_evaluations += work.energy_evaluations;
+  }
+
   /// Whether Solver::AUTOMATIC, about to run Newton on P, tries the
   /// published scheme first (see lbfgs_trial_above_flops_per_element), with
   /// the hand-over's L-BFGS (Chunked_LBFGS: the published eps schedule and

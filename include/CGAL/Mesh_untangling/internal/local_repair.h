@@ -42,9 +42,6 @@ namespace internal {
 
 /// Rings tried around the inverted elements, from the nearest.
 constexpr int local_repair_rings = 4;
-/// The local phase is for a few blockers: with more, the global run is
-/// not near a solution and a region around them would be most of the mesh.
-constexpr std::size_t local_repair_most_inverted = 64;
 /// eps steps of one local run: the repairs above took 9 to 82.
 constexpr std::size_t local_repair_eps_steps = 150;
 /// eps steps of the patient rerun of stage 0 (rockerarm 344: 8 inverted after 100).
@@ -174,6 +171,18 @@ bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, 
     }
   }
   return false;
+}
+
+/// The local phase as a direct run's repair at stage 1's first stall
+/// (staged_untangling.h), with the deadline and options of that run.
+template <int d>
+Repair_at_stall<d> local_repair_at_stall(const Untangling_options& options)
+{
+  return [options](Untangling_input<d>& stalled, std::size_t eps_steps, Untangling_result& work) {
+    Untangling_options o = options;
+    o.max_outer_iterations = eps_steps;
+    return repair_locally<d>(stalled, o, work);
+  };
 }
 
 /// Describes in `r` the map `in` (after a repair).

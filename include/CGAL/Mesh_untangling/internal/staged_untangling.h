@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // One untangling of the given map: stage 0 with the given targets, and when
-// it stalls, stage 1 toward regular targets (with shakes) and stage 2 back
-// to the given ones from the valid map stage 1 found.
+// it stalls, stage 1 toward regular targets (with a local repair at its
+// first stall, then shakes) and stage 2 back to the given ones from the
+// valid map stage 1 found.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_STAGED_UNTANGLING_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_STAGED_UNTANGLING_H
 
@@ -14,6 +15,7 @@
 #include <CGAL/Mesh_untangling/internal/verdict.h>
 #include <CGAL/Mesh_untangling/internal/stage_trace.h>
 
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -23,6 +25,9 @@ namespace Mesh_untangling {
 namespace internal {
 
 constexpr int max_restarts = 10;           // shakes in stage 1
+/// The local repair is for a few blockers: with more, the run is not near a
+/// solution and a region around them would be most of the mesh.
+constexpr std::size_t local_repair_most_inverted = 64;
 
 /// The same problem with a regular target of the same orientation for
 /// every element: well conditioned, so it untangles where badly shaped
@@ -69,6 +74,14 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
   if(!P.links.empty()) apply_links<d>(P.links, P.x.data());   // (a linked vertex follows its representative)
 }
 
+/// A repair of the few elements that a stalled stage 1 leaves inverted
+/// (local_repair.h, which the driver hands in where it applies): moves the
+/// free vertices of `stalled` within `eps_steps` eps steps, adds its cost to
+/// `work`, and returns whether every element ended positive.
+template <int d>
+using Repair_at_stall =
+    std::function<bool(Untangling_input<d>& stalled, std::size_t eps_steps, Untangling_result& work)>;
+
 /// Writes P's free vertices into `in`, in the user's coordinates; the fixed
 /// ones keep their exact input values.  A linked vertex is the image of its
 /// representative in the user's coordinates (one rounding: the transitions
@@ -106,24 +119,58 @@ Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, 
                                                  : Stall_test::COUNT_STANDS);
 }
 
+/// Tries `repair` on the map of R, stalled; a repaired map replaces R's.
+template <int d>
+bool repaired_at_stall(Untangling_problem<d>& R, const Untangling_input<d>& in, Eps_loop<d>& loop,
+                       const Repair_at_stall<d>& repair)
+{
+  if(!repair || loop.out_of_time() || loop.eps_steps_left() == 0) return false;
+  Untangling_input<d> stalled = in;
+  hand_back_free_vertices(R, stalled);
+  Untangling_result work;
+  const bool repaired = repair(stalled, loop.eps_steps_left(), work);
+  loop.add_work_done_elsewhere(work);
+  if(!repaired) return false;
+  for(std::size_t v = 0; v < R.number_of_vertices; ++v)
+    if(!R.is_fixed[v]) Eigen::Map<Eigen::Matrix<double, d, 1>>(&R.x[d * v]) = (stalled.positions[v] - R.center) / R.scale;
+  return true;
+}
+
 /// After stage 0 stalled (`outcome`, its end): stage 1 untangles toward regular targets (with
-/// given targets; otherwise the targets are regular already), shaking the
-/// vertices of the non-positive elements when it stalls in turn; stage 2
-/// goes back to the given targets from the valid map stage 1 found, never
-/// trading its validity for shape.  P.x receives the map.
+/// given targets; otherwise the targets are regular already); when it
+/// stalls in turn, `repair` is tried once, then the vertices of the
+/// non-positive elements are shaken; stage 2 goes back to the given targets
+/// from the valid map stage 1 found, never trading its validity for shape.
+/// P.x receives the map.
 template <int d>
 Eps_loop_outcome run_stages_1_and_2(Untangling_problem<d>& P, const Untangling_input<d>& in, Eps_loop<d>& loop,
-                                    bool targets_given, Eps_loop_outcome outcome)
+                                    bool targets_given, Eps_loop_outcome outcome, const Repair_at_stall<d>& repair)
 {
   Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
   // with given targets, stage 2 takes over from the first valid map
   const Eps_loop_goal goal = targets_given ? Eps_loop_goal::VALID_MAP : Eps_loop_goal::SETTLED_ENERGY;
   if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
-  // Still stuck: typically free vertices collapsed onto each other, a
-  // symmetric configuration the gradient cannot break.  Shake the vertices
+  // Stalled with a few inverted elements whose free vertices must move
+  // together: a local repair untangles them where a shake tangles the
+  // whole map again (benchmark/Mesh_untangling/README.md, "the shakes").
+  // It is tried once, at the first stall with so few.
+  bool repair_tried = false;
+  const auto repaired = [&] {
+    if(!repair || repair_tried || determinant_summary(R, R.x.data()).non_positive > local_repair_most_inverted)
+      return false;
+    repair_tried = true;
+    return repaired_at_stall(R, in, loop, repair);
+  };
+  // Otherwise, typically free vertices collapsed onto each other, a
+  // symmetric configuration the gradient cannot break: shake the vertices
   // of the non-positive elements and go on.
   std::mt19937 random(1);
-  for(int restart = 0; restart < max_restarts && outcome.stalled && !loop.out_of_time(); ++restart) {
+  for(int restart = 0; outcome.stalled && !loop.out_of_time(); ++restart) {
+    if(repaired()) {
+      outcome.stalled = false;
+      break;
+    }
+    if(restart == max_restarts) break;
     shake_non_positive_elements(R, random);
     outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
   }
@@ -151,12 +198,13 @@ Eps_loop_outcome run_stages_1_and_2(Untangling_problem<d>& P, const Untangling_i
 /// (badly shaped targets can hold a few elements inverted forever), stage 1
 /// untangles toward regular targets from where stage 0 stopped, shaking the
 /// vertices of the elements it cannot untangle when it stalls in turn (a few
-/// times at most); stage 2 goes back to the given targets from that valid map,
+/// times at most), after `repair` when given; stage 2 goes back to the given targets from that valid map,
 /// keeping it valid.
 template <int d>
 Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_options& options,
                                     const Protection_request<d>& protection = Protection_request<d>(),
-                                    Phantom_elements<d>* phantoms_used = nullptr)
+                                    Phantom_elements<d>* phantoms_used = nullptr,
+                                    const Repair_at_stall<d>& repair = {})
 {
   Untangling_result result;
   result.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);
@@ -190,7 +238,8 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
   Eps_loop<d> loop(options, theta, result, has_free_boundary_vertex<d>(in));
   const bool regular_targets_follow = targets_given && !options.give_up_on_stall;
   Eps_loop_outcome outcome = run_stage_0(P, in, loop, regular_targets_follow, options.stage_0_never_stalls);
-  if(outcome.stalled && !options.give_up_on_stall) outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome);
+  if(outcome.stalled && !options.give_up_on_stall)
+    outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome, repair);
   CGAL_MESH_UNTANGLING_STAGE("direct: eps loop");
   auto summary = determinant_summary(P, P.x.data());
   if(loop.restore_least_tangled(P, summary.non_positive)) {

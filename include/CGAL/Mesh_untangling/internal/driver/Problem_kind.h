@@ -112,6 +112,11 @@ public:
   /// seamless problem would lose its links (it gets the patient rerun).
   bool local_regions_apply() const { return !seamless_; }
 
+  /// Whether a direct run tries the local repair at stage 1's first stall
+  /// (staged_untangling.h): where the repair cuts regions, with no phantoms
+  /// in the energy (a region holds mesh elements only).
+  bool repair_at_stall_applies() const { return local_repair_applies() && local_regions_apply() && !phantoms_supplied_; }
+
   /// Whether `options` ask for refinement and it applies: the boundary
   /// fixed, targets given (they are split with the edges), and no supplied
   /// phantoms (they name the vertices of the unrefined mesh).

@@ -7,7 +7,8 @@
 // gets, the run record (Run.h) which result is kept; each rung lives in a
 // file of its own.
 //
-//   1. the untangling from the given map (staged_untangling.h), or by
+//   1. the untangling from the given map (staged_untangling.h, with the
+//      local repair at its first stall where rung 2 applies), or by
 //      continuation from the rest shape (continuation.h), or the carried
 //      start (carried_start.h) or the direct run and then the continuation;
 //      in 2D with nothing fixed, the convex start (convex_start.h);
@@ -37,10 +38,13 @@ namespace Mesh_untangling {
 namespace internal {
 
 template <int d>
-Run<d> run_directly(Untangling_input<d>& in, const Untangling_options& options, const Protection_request<d>& protection)
+Run<d> run_directly(Untangling_input<d>& in, const Untangling_options& options, const Problem_kind<d>& kind,
+                    const Protection_request<d>& protection)
 {
   Run<d> direct;
-  direct.result = untangle_directly<d>(in, options, protection, &direct.phantoms);
+  direct.result = untangle_directly<d>(in, options, protection, &direct.phantoms,
+                                       kind.repair_at_stall_applies() ? local_repair_at_stall<d>(options)
+                                                                      : Repair_at_stall<d>());
   return direct;
 }
 
@@ -84,7 +88,7 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
                                                kind.builds_phantoms(), *rest);
     run = carried ? std::move(*carried)
                   : run_directly<d>(in, budget.before_the_continuation<d>(elements, kind.direct_run_gives_up_on_stall()),
-                                    protection);
+                                    kind, protection);
     if(budget.leaves_room_after(run.result)) {
       const auto first_map = std::exchange(in.positions, given);
       keep_the_better(run, first_map,
@@ -92,7 +96,7 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
                       in);
     }
   } else {
-    run = run_directly<d>(in, budget.whole(), protection);
+    run = run_directly<d>(in, budget.whole(), kind, protection);
     if(kind.convex_start_applies() && budget.leaves_room_after(run.result)) {
       const auto direct_map = in.positions;
       if(std::optional<Run<d>> convex = untangle_from_convex_start<d>(in, budget.left_after(run.result), protection))
