@@ -793,24 +793,25 @@ if [ -n "$DATA" ] && [ -f "$joint/parameter.vtk" ]; then
 fi
 # The local phase (internal/local_repair.h): stage 1 of the global run stalls
 # on CuboidBlocks rockerarm 348 with 10 inverted tets after 30 eps steps
-# (exit 1 without the local phase); a region of rings around them, untangled
-# with the shape term alone, repairs them.
+# (exit 1 without the local phase); the region of 4 rings around them,
+# untangled with the shape term alone, repairs them at the second try (the
+# shakes, then the repair of the final map, took 1,310 eps steps).
 r348="$DATA/cuboidblocks/rockerarm.hexex_block348"
 if [ -n "$DATA" ] && [ -f "$r348/parameter.vtk" ]; then
   run local348 "$r348/parameter.vtk" --rest "$r348/object.vtk" --fixed "$r348/handles.txt" --threads 1 \
     -o local348.vtk --report local348.json -q
   check "local phase: rockerarm 348 exit 0" rc_is local348 0
   check "local phase: no inverted tet" json_is local348.json inverted_after 0
-  check "local phase: more eps steps than the global run's 253" [ "$(json_get local348.json outer_iterations)" -gt 253 ]
+  check "local phase: at the stall, within 300 eps steps" [ "$(json_get local348.json outer_iterations)" -le 300 ]
 fi
 # The local phase at stage 1's first stall with few inverted tets, before
 # any shake: joint 73 stalls with 2 after 38 eps steps; the shakes took
 # 1,265 eps steps to untangle it (each tangled the whole block again), the
-# repair there and stage 2 take 1,026.
+# repair there (84, the largest region first) and stage 2 take 126.
 if [ -n "$DATA" ] && [ -f "$joint/parameter.vtk" ]; then
   run stall73 "$joint/parameter.vtk" --rest "$joint/object.vtk" --fixed "$joint/handles.txt" --threads 1 \
-    --max-iterations 1100 -o stall73.vtk --report stall73.json -q
-  check "repair at the stall: joint 73 exit 0 within 1,100 eps steps" rc_is stall73 0
+    --max-iterations 400 -o stall73.vtk --report stall73.json -q
+  check "repair at the stall: joint 73 exit 0 within 400 eps steps" rc_is stall73 0
   check "repair at the stall: no inverted tet" json_is stall73.json inverted_after 0
 fi
 

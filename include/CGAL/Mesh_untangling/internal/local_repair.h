@@ -10,14 +10,20 @@
 // repair them: their free vertices have to move together, through a barrier
 // that the global eps, shrunk to 1e-3 .. 1e-5 by then, no longer lets them
 // cross.  The local phase cuts out the elements within k vertex rings of the
-// inverted ones (k = 1, 2, ...), fixes the vertices on the cut, and untangles
+// inverted ones (k = 4, 3, 2, 1), fixes the vertices on the cut, and untangles
 // that small problem afresh: its eps schedule restarts from the small
 // problem's own (negative) smallest det J, and Newton solves it in 0.1 to
 // 0.5 s per region (150 eps steps at most).  A success inside the region is a success of the whole map,
-// since no element outside it moves.  Measured (one core, 120 s): s16c 12
-// and joint 73 are repaired at 2 rings; rockerarm 348 at 4 rings, and only
-// with the shape term alone (theta = 0: with the default 1/2 no ring up to 6
-// repairs it, with 1 it takes 5).
+// since no element outside it moves.  Measured (one core, 120 s), rings
+// tried from the nearest: s16c 12 and joint 73 are repaired at 2 rings;
+// rockerarm 348 at 4 rings, and only with the shape term alone (theta = 0:
+// with the default 1/2 no ring up to 6 repairs it, with 1 it takes 5).  The
+// largest region is tried first: it holds every smaller one, so a map that
+// repairs a smaller region is a solution of it too (the rings around kept
+// where they are), and each failed try costs its 150 eps steps.  At stage 1's first
+// stall (staged_untangling.h), rings 4, 3, 2, 1: joint 73 repaired at the
+// first try (84 eps steps) where rings 1, 2, 3 had cost 900 before ring 4
+// did; s16c 12 10 eps steps instead of 337; rockerarm 348 at the second try.
 //
 // A run can also fail far from a solution: on rockerarm 344 (502 inverted
 // in the input) stage 0 gives up after 4 steps, its count never below the
@@ -40,7 +46,7 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
-/// Rings tried around the inverted elements, from the nearest.
+/// Rings around the inverted elements: the regions tried, from the largest.
 constexpr int local_repair_rings = 4;
 /// eps steps of one local run: the repairs above took 9 to 82.
 constexpr std::size_t local_repair_eps_steps = 150;
@@ -141,8 +147,9 @@ bool untangle_region(Untangling_input<d>& in, const std::vector<char>& region, c
 
 /// The local phase (see the file's comment) on `in` (no phantoms, targets
 /// given: Problem_kind::local_repair_applies), within `options`' deadline and `options.max_outer_iterations` eps steps in
-/// all: regions of 1 to local_repair_rings rings around its non-positive
-/// elements, each with the default theta, then with the shape term alone.
+/// all: regions of local_repair_rings down to 1 rings around its
+/// non-positive elements, each with the default theta, then with the shape
+/// term alone.
 /// Returns whether one region repaired them all (its free vertices are then
 /// written); `work` receives the cost.
 template <int d>
@@ -151,11 +158,16 @@ bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, 
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling, default_degenerate_quality, Element_order::AS_GIVEN);
   const std::vector<std::size_t> blockers = non_positive_elements<d>(in, P.reference_orientation);
   if(blockers.empty() || blockers.size() > local_repair_most_inverted) return false;
-  std::vector<char> region(in.number_of_mesh_elements(), 0);
-  for(std::size_t k : blockers) region[k] = 1;
+  std::vector<std::vector<char>> regions(local_repair_rings);   // regions[k]: k + 1 rings
+  std::vector<char> grown(in.number_of_mesh_elements(), 0);
+  for(std::size_t k : blockers) grown[k] = 1;
+  for(auto& ring : regions) {
+    grow_by_one_ring<d>(in, grown);
+    ring = grown;
+  }
   std::size_t steps_left = options.max_outer_iterations;
-  for(int ring = 1; ring <= local_repair_rings; ++ring) {
-    grow_by_one_ring<d>(in, region);
+  for(auto largest = regions.rbegin(); largest != regions.rend(); ++largest) {
+    const std::vector<char>& region = *largest;
     for(double theta : {options.theta, 0.}) {
       if(out_of_time(options) || steps_left == 0) return false;
       Untangling_options o = options;
