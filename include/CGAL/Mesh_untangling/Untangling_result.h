@@ -111,6 +111,20 @@ struct Untangling_result
   { return status == Untangling_status::SUCCESS; }
 };
 
+namespace internal {
+
+/// Adds the counts of the work of `part` (another run, or part of one, on
+/// the same problem) to `r`: eps steps, solver iterations, evaluations.
+/// Not its seconds: a part that runs inside a timed run is on its clock.
+inline void add_counts(Untangling_result& r, const Untangling_result& part)
+{
+  r.outer_iterations += part.outer_iterations;
+  r.inner_iterations += part.inner_iterations;
+  r.energy_evaluations += part.energy_evaluations;
+}
+
+} // namespace internal
+
 } // namespace Mesh_untangling
 } // namespace CGAL
 

@@ -138,9 +138,7 @@ public:
   void add_work_done_elsewhere(const Untangling_result& work)
   {
     steps_ += work.outer_iterations;
-    result_.outer_iterations += work.outer_iterations;
-    result_.inner_iterations += work.inner_iterations;
-    result_.energy_evaluations += work.energy_evaluations;
+    add_counts(result_, work);
   }
 
   /// Whether Solver::AUTOMATIC, about to run Newton on P, tries the

@@ -154,6 +154,7 @@ struct Untangling_problem
 
   Vector point(std::size_t v) const { return Eigen::Map<const Vector>(&x[d * v]); }
   Vector to_user(const Vector& p) const { return p * scale + center; }
+  Vector from_user(const Vector& p) const { return (p - center) / scale; }
 };
 
 /// Whether the fixed vertices span the space: at least d + 1 of them, not
@@ -456,7 +457,7 @@ void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
   P.x.resize(d * n);
   for_each_chunk(n, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t v = first; v < last; ++v)
-      Eigen::Map<Vector>(&P.x[d * v]) = (in.positions[v] - P.center) / P.scale;
+      Eigen::Map<Vector>(&P.x[d * v]) = P.from_user(in.positions[v]);
   });
 }
 

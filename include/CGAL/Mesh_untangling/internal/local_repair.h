@@ -120,14 +120,6 @@ Untangling_input<d> region_problem(const Untangling_input<d>& in, const std::vec
   return sub;
 }
 
-/// Adds the work of `r` to `work`.
-inline void add_local_work(Untangling_result& work, const Untangling_result& r)
-{
-  work.outer_iterations += r.outer_iterations;
-  work.inner_iterations += r.inner_iterations;
-  work.energy_evaluations += r.energy_evaluations;
-}
-
 /// Untangles the elements of `region` of `in` with `options`, the rest of
 /// the map fixed; writes its free vertices and returns true when every
 /// element of the region ends positive.
@@ -138,7 +130,7 @@ bool untangle_region(Untangling_input<d>& in, const std::vector<char>& region, c
   std::vector<std::size_t> vertex_of;
   Untangling_input<d> sub = region_problem<d>(in, region, vertex_of);
   const Untangling_result r = untangle_directly<d>(sub, options);
-  add_local_work(work, r);
+  add_counts(work, r);
   if(r.status == Untangling_status::INVALID_INPUT || r.inverted_after > 0) return false;
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
     if(!sub.is_fixed[i]) in.positions[vertex_of[i]] = sub.positions[i];
@@ -177,7 +169,7 @@ bool repair_locally(Untangling_input<d>& in, const Untangling_options& options, 
       o.give_up_on_stall = false;
       Untangling_result r;
       const bool repaired = untangle_region<d>(in, region, o, r);
-      add_local_work(work, r);
+      add_counts(work, r);
       steps_left -= std::min(steps_left, r.outer_iterations);
       if(repaired) return true;
     }
@@ -248,13 +240,13 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
     patient.callback = options.progress_step;
     patient.stage_0_never_stalls = true;
     const Untangling_result first = untangle_directly<d>(rerun, patient);
-    add_local_work(work, first);
+    add_counts(work, first);
     repaired = reached_goal(first.status) ||
                (first.status == Untangling_status::INVERTED_ELEMENTS_LEFT &&
                 repair_locally<d>(rerun, within_budget(work), work));
     if(repaired) in.positions = std::move(rerun.positions);
   }
-  add_local_work(r, work);
+  add_counts(r, work);
   r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(repaired) {
     r.input_returned = false;

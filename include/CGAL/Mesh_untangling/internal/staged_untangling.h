@@ -132,7 +132,7 @@ bool repaired_at_stall(Untangling_problem<d>& R, const Untangling_input<d>& in, 
   loop.add_work_done_elsewhere(work);
   if(!repaired) return false;
   for(std::size_t v = 0; v < R.number_of_vertices; ++v)
-    if(!R.is_fixed[v]) Eigen::Map<Eigen::Matrix<double, d, 1>>(&R.x[d * v]) = (stalled.positions[v] - R.center) / R.scale;
+    if(!R.is_fixed[v]) Eigen::Map<Eigen::Matrix<double, d, 1>>(&R.x[d * v]) = R.from_user(stalled.positions[v]);
   return true;
 }
 

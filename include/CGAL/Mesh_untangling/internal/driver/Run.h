@@ -32,12 +32,11 @@ inline bool has_fewer_defects(const Untangling_result& a, const Untangling_resul
   return defects(a) < defects(b);
 }
 
-/// Adds the work of `earlier` (another run on the same problem) to `r`.
+/// Adds the work of `earlier` (another run on the same problem, timed on
+/// its own) to `r`, its seconds too.
 inline void add_work(Untangling_result& r, const Untangling_result& earlier)
 {
-  r.outer_iterations += earlier.outer_iterations;
-  r.inner_iterations += earlier.inner_iterations;
-  r.energy_evaluations += earlier.energy_evaluations;
+  add_counts(r, earlier);
   r.seconds += earlier.seconds;
 }
 

@@ -180,7 +180,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     Untangling_input<d> again = trial;
     again.positions = trial_given;
     const Untangling_result next = rerun(again, within_budget());
-    add_local_work(work, next);
+    add_counts(work, next);
     if(next.status == Untangling_status::INVALID_INPUT || next.status == Untangling_status::NUMERICAL_FAILURE) break;
     trial.positions = std::move(again.positions);
     repaired = reached_goal(next.status);
@@ -200,7 +200,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
     trial_given = std::move(fewer_given);
     splits = std::move(fewer_splits);
   }
-  add_local_work(r, work);
+  add_counts(r, work);
   r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(!repaired) return;
   describe_repaired_map<d>(trial, options, r);
