@@ -53,6 +53,7 @@ struct Arguments
   std::string targets = "rest";   // the shapes the energy pulls toward: the rest's, or regular simplices
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
+  std::string quads;            // the quad mesh of an integer-grid map (OBJ with seams)
   std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
   std::string weld = "auto";    // OBJ vertices at one point: auto, off or a distance
   bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false;
@@ -154,7 +155,7 @@ void check_output_paths(const Arguments& args)
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
   const std::pair<const char*, const std::string*> outputs[] = {
     {"the result", &args.output}, {"the report", &args.report}, {"--svg", &args.svg},
-    {"--svg-input", &args.svg_input}, {"--phantoms", &args.phantoms}};
+    {"--svg-input", &args.svg_input}, {"--phantoms", &args.phantoms}, {"--quads", &args.quads}};
   for(std::size_t i = 0; i < std::size(outputs); ++i) {
     const std::string& output = *outputs[i].second;
     if(output.empty()) continue;
@@ -169,6 +170,8 @@ void check_output_paths(const Arguments& args)
     if(!picture->empty() && lowercase_extension(*picture) != ".svg")
       throw Usage_error(*picture + ": " + (picture == &args.svg ? "--svg" : "--svg-input") +
                         " writes an SVG picture: give a .svg file");
+  if(!args.quads.empty() && lowercase_extension(args.quads) != ".obj")
+    throw Usage_error(args.quads + ": --quads writes the quad mesh as OBJ: give a .obj file");
 }
 
 /// Pictures are drawn for 2D maps only.
@@ -557,7 +560,7 @@ Run_options run_options(const Arguments& args, Progress_display* display)
 /// Where each output is written until all are committed together.
 struct Temporary_outputs
 {
-  std::string output, report, svg, svg_input, phantoms;
+  std::string output, report, svg, svg_input, phantoms, quads;
 };
 
 /// Checks every output before any work (regular file or new name, links
@@ -567,7 +570,8 @@ Temporary_outputs reserve_outputs(const Arguments& args, IO::internal::Output_fi
   Temporary_outputs t;
   t.output = files.add(args.output);
   const std::pair<const std::string*, std::string*> optional[] = {
-    {&args.report, &t.report}, {&args.svg, &t.svg}, {&args.svg_input, &t.svg_input}, {&args.phantoms, &t.phantoms}};
+    {&args.report, &t.report}, {&args.svg, &t.svg}, {&args.svg_input, &t.svg_input}, {&args.phantoms, &t.phantoms},
+    {&args.quads, &t.quads}};
   for(const auto& o : optional)
     if(!o.first->empty()) *o.second = files.add(*o.first);
   return t;
@@ -730,7 +734,7 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
 void write_seamless_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
                            const Mesh_file& mesh, const MU::Untangling_result& r, const Verdict& before,
                            const Verdict& v, const Seam_summary& seams, const Grid_singularities& grid_before,
-                           const Grid_singularities& grid_after)
+                           const Grid_singularities& grid_after, const Quad_mesh& quads)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -753,6 +757,10 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["integer_grid_singular_vertices_after"] = grid_after.singular;
   j["integer_grid_singular_at_vertices_after"] = grid_after.at_vertices;
   j["integer_grid_points_in_inverted_before"] = grid_before.in_inverted;
+  j["quad_mesh"] = quads.why_not.empty() ? "extracted" : quads.why_not;
+  j["quads"] = quads.mesh.cells.size();
+  j["quad_vertices"] = quads.mesh.rest.size();
+  j["open_grid_edges"] = quads.open_edges;
   j["phantom_protection"] = false;
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
@@ -835,6 +843,13 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   const Verdict verdict = check_mesh_file(written, run.fixed);
   const Seam_summary seams = compare_seams(given, written);
   const Grid_singularities grid_after = integer_grid_singularities(written);
+  const Quad_mesh quads = integer_grid_quad_mesh(written);
+  if(!args.quads.empty()) {
+    if(quads.why_not.empty())
+      write_for(args.quads, [&] { IO::write_mesh_file(to.quads, quads.mesh); });
+    else
+      files.withdraw(to.quads);
+  }
   if(!args.svg_input.empty())
     write_text_file(args.svg_input, to.svg_input, [&](std::ostream& out) { write_svg(out, *run.input_picture); });
   if(!args.svg.empty()) {
@@ -845,7 +860,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   if(!args.report.empty())
     write_text_file(args.report, to.report, [&](std::ostream& out) {
       write_seamless_report(out, args, run.fixed_source, mesh, run.result, before, verdict, seams, grid_before,
-                            grid_after);
+                            grid_after, quads);
     });
   files.commit();
   if(!args.quiet) {
@@ -869,11 +884,19 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)%s\n",
                  grid_before.singular, grid_after.singular, grid_after.at_vertices,
                  free ? "; translations free: the grid is not aligned with the seams any more" : "");
+    if(quads.why_not.empty())
+      std::fprintf(stderr, "integer-grid quads: %zu on %zu vertices%s\n", quads.mesh.cells.size(),
+                   quads.mesh.rest.size(),
+                   quads.open_edges != 0 ? " (the boundary cuts the grid: its cut squares are left out)" : "");
     if(!verdict.locally_invertible)
       std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
                                                                    : run.result.message.c_str());
   }
-  return exit_code(verdict);
+  // Said even with --quiet: a file asked for is not written.
+  if(!args.quads.empty() && !quads.why_not.empty())
+    std::fprintf(stderr, "untangle_mesh: no quad mesh, %s not written: %s\n", args.quads.c_str(), quads.why_not.c_str());
+  const int code = exit_code(verdict);
+  return code == 0 && !args.quads.empty() && !quads.why_not.empty() ? 1 : code;
 }
 
 int run(const Arguments& args)
@@ -885,6 +908,9 @@ int run(const Arguments& args)
   Mesh_file mesh = read_problem(args);
   print_welding(args, mesh);
   if(mesh.has_corner_map()) return run_seamless(args, mesh);
+  if(!args.quads.empty())
+    throw Usage_error("--quads: " + args.input + " has no seams (an OBJ whose vt differ at a vertex): only a seamless "
+                      "parameterization draws an integer grid on its surface");
   if(args.seams != "keep-translations")
     throw Usage_error("--seams " + args.seams + ": " + args.input + " has no seams (an OBJ whose vt differ at a vertex)");
   if(args.refine && mesh.cell_size != 0)
@@ -1024,6 +1050,9 @@ int main(int argc, char** argv)
   app.add_option("--svg", args.svg, "SVG picture of the result (2D maps): colours by distortion, inverted "
                  "triangles red, over-wound vertices circled, boundary crossings marked, phantoms dashed");
   app.add_option("--svg-input", args.svg_input, "SVG picture of the input map (2D maps)");
+  app.add_option("--quads", args.quads, "the quad mesh that an integer-grid map draws on its surface (an OBJ with "
+                 "seams whose transitions translate by integers, its cones on integer points), as .obj; the report "
+                 "says why when there is none, and then the file is not written and the exit code is 1");
   app.add_option("--phantoms", args.phantoms, "the phantom elements used, on the final map: .vtk (with a 'positive' "
                  "cell field), .mesh, .off or .obj");
   app.add_option("--threads", args.threads, "at most N threads (default: every core); the result is the same, "

@@ -6,6 +6,9 @@
 # seam transition kept to 1e-12 and the integer-grid singular vertices down
 # to the cones; with --seams free-translations the seams slide (rotations
 # kept); bad seams and options that do not apply are usage errors.
+# --quads writes the integer grid's quad mesh: as many quads as the map has
+# area, V - F the Euler characteristic (E = 2 F); a map that is no
+# integer-grid map (free translations) writes none, says why, exits 1.
 # The same torus with its seams written as duplicated v (one per chart, as
 # quad-remeshing tools write them) is welded, untangled to the same uv and
 # written back with its own vertices; --fixed names them; --weld says how.
@@ -23,10 +26,11 @@ same_layout() {
 }
 at_most() { python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) <= float(sys.argv[2]) else 1)" "$1" "$2"; }
 
-for shape in torus:10:0 seamcube:6:8 pillow:6:4 staircase:3:249; do
-  IFS=: read -r name n cones <<< "$shape"
+for shape in torus:10:0:100:0 seamcube:6:8:216:2 pillow:6:4:72:2 staircase:3:249:8316:2; do
+  IFS=: read -r name n cones quads euler <<< "$shape"
   "$MAKE" "$name" "$n" 1.3 5 "$name.obj" > /dev/null
-  "$UNTANGLE" "$name.obj" -o "$name-out.obj" --report "$name.json" --svg "$name.svg" --svg-input "$name-in.svg" --quiet
+  "$UNTANGLE" "$name.obj" -o "$name-out.obj" --report "$name.json" --svg "$name.svg" --svg-input "$name-in.svg" \
+    --quads "$name-quads.obj" --quiet
   code=$?
   check "$name: exit 0 (code $code)" [ "$code" = 0 ]
   check "$name: locally invertible" [ "$(json "$name.json" locally_invertible)" = True ]
@@ -39,6 +43,10 @@ for shape in torus:10:0 seamcube:6:8 pillow:6:4 staircase:3:249; do
   check "$name: only the cones are singular on the integer grid" \
     [ "$(json "$name.json" integer_grid_singular_vertices_after)" = "$cones" ]
   check "$name: pictures with seams" grep -q 'class="seam"' "$name.svg"
+  check "$name: quads extracted" [ "$(json "$name.json" quad_mesh)" = extracted ]
+  check "$name: $quads quads (the map's area)" [ "$(grep -c '^f ' "$name-quads.obj")" = "$quads" ]
+  check "$name: the report counts them" [ "$(json "$name.json" quads)" = "$quads" ]
+  check "$name: V - F = $euler" [ $(( $(grep -c '^v ' "$name-quads.obj") - quads )) = "$euler" ]
 done
 
 # seams as duplicated v: welded, the same uv as with shared v, written back with the file's vertices
@@ -137,6 +145,21 @@ check "free: same OBJ layout" same_layout seamcube.obj cube-free.obj
 "$MAKE" square 4 0.3 1 square.obj > /dev/null
 "$UNTANGLE" square.obj -o s.obj --seams free-translations --quiet 2> noseam.err
 check "--seams on a file without seams: exit 2" [ $? = 2 ]
+
+# --quads: a map with free translations is no integer-grid map: locally invertible, but no quads (exit 1, why)
+"$UNTANGLE" seamcube.obj -o cube-free2.obj --seams free-translations --quads cube-free-quads.obj \
+  --report cube-free2.json --quiet 2> free-quads.err
+check "--quads, free translations: exit 1" [ $? = 1 ]
+check "--quads, free translations: the map written" [ -s cube-free2.obj ]
+check "--quads, free translations: no quad file" [ ! -e cube-free-quads.obj ]
+check "--quads, free translations: said why" grep -q 'no quad mesh, cube-free-quads.obj not written: the transition across seam edge' free-quads.err
+check "--quads, free translations: the report says why" grep -q '"quad_mesh": "the transition across seam edge' cube-free2.json
+"$UNTANGLE" square.obj -o s2.obj --quads q.obj --quiet 2> quads-noseam.err
+check "--quads without seams: exit 2" [ $? = 2 ]
+check "--quads without seams: why" grep -q 'only a seamless parameterization draws an integer grid' quads-noseam.err
+"$UNTANGLE" torus.obj -o t4.obj --quads q.vtk --quiet 2> quads-vtk.err
+check "--quads q.vtk: exit 2" [ $? = 2 ]
+check "--quads q.vtk: nothing written" [ ! -e t4.obj ]
 
 echo "test_cli_seams: $checks checks, $failures failed"
 [ "$failures" = 0 ]

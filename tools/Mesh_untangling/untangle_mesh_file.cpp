@@ -6,6 +6,7 @@
 #include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
+#include <CGAL/Mesh_untangling/integer_grid_quads.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
 #include <CGAL/Mesh_untangling/seamless_invertibility.h>
@@ -612,6 +613,23 @@ Grid_singularities integer_grid_singularities(const Mesh_file& mesh)
   }
   g.singular = g.at_vertices + g.in_inverted;
   return g;
+}
+
+Quad_mesh integer_grid_quad_mesh(const Mesh_file& mesh)
+{
+  check_seamless_shape(mesh, {});
+  std::vector<std::array<double, 2>> uv;
+  for(const auto& f : mesh.simplex_corner_map)
+    for(int c = 0; c < 3; ++c) uv.push_back({mesh.corner_map[f[c]][0], mesh.corner_map[f[c]][1]});
+  const MU::Integer_grid_quads q = MU::extract_integer_grid_quads(mesh.rest, triangles_of(mesh), uv);
+  Quad_mesh out;
+  out.open_edges = q.open_edges;
+  out.why_not = q.not_extracted;
+  out.mesh.cell_size = 4;
+  out.mesh.rest_dimension = 3;
+  out.mesh.rest = q.points;
+  for(const auto& quad : q.quads) out.mesh.cells.push_back({quad[0], quad[1], quad[2], quad[3], 0, 0, 0, 0});
+  return out;
 }
 
 Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,

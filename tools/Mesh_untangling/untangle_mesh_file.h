@@ -144,6 +144,18 @@ struct Grid_singularities
 };
 Grid_singularities integer_grid_singularities(const Mesh_file& mesh);
 
+/// The quad mesh of a seamless parameterization that is an integer-grid
+/// map (CGAL::Mesh_untangling::extract_integer_grid_quads() on its surface
+/// and per-corner map), as a mesh file of quadrilaterals on the surface
+/// (`rest`); `why_not` says why there is none (then the mesh is empty).
+struct Quad_mesh
+{
+  Mesh_file mesh;
+  std::size_t open_edges = 0;   ///< grid edges cut by the boundary
+  std::string why_not;
+};
+Quad_mesh integer_grid_quad_mesh(const Mesh_file& mesh);
+
 /// Local invertibility of `mesh.map` relative to the orientation of the rest
 /// (or regular, all positive) targets.
 struct Verdict

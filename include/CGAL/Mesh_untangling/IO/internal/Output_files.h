@@ -66,6 +66,19 @@ public:
     return temporary;
   }
 
+  /// Gives up the output written to `temporary` (a name add() returned):
+  /// its target is left as it was, and commit() goes on without it.
+  void withdraw(const std::string& temporary)
+  {
+    for(std::size_t i = 0; i < entries_.size(); ++i)
+      if(entries_[i].temporary == temporary) {
+        std::remove(temporary.c_str());
+        unregister_temporary(entries_[i].slot);
+        entries_.erase(entries_.begin() + std::ptrdiff_t(i));
+        return;
+      }
+  }
+
   /// Replaces every target by its temporary, which must all have been written.
   /// \throws Write_error if a temporary is missing or cannot be renamed.
   void commit()
