@@ -630,6 +630,24 @@ Points project_on_best_fit_plane(const py::handle& vertices, const py::handle& t
   return map_array(mesh, 2);
 }
 
+/// The quad mesh of a seamless integer-grid map: (points, quads, open_edges),
+/// or InvalidInputError saying why there is none.
+py::tuple integer_grid_quads(const py::handle& vertices, const py::handle& elements, const py::handle& rest,
+                             const py::handle& rest_elements)
+{
+  if(rest.is_none() || rest_elements.is_none())
+    throw py::value_error("integer_grid_quads takes a seamless map: rest (the surface's vertices) and rest_elements "
+                          "(its triangles) are needed");
+  const Problem problem = make_problem(vertices, elements, rest, rest_elements, std::nullopt);
+  Quad_mesh quads;
+  {
+    py::gil_scoped_release release;
+    quads = integer_grid_quad_mesh(problem.mesh);
+  }
+  if(!quads.why_not.empty()) throw Invalid_problem("no quad mesh: " + quads.why_not);
+  return py::make_tuple(points_of(quads.mesh.rest, 3), ids_of(quads.mesh.cells, 4), quads.open_edges);
+}
+
 template <typename T>
 py::object optional_array(const std::optional<T>& a) { return a ? py::object(*a) : py::none(); }
 
@@ -809,4 +827,6 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"), py::arg("point_fields"), py::arg("cell_fields"),
         py::arg("layout"));
   m.def("_project_on_best_fit_plane", &project_on_best_fit_plane, py::arg("vertices"), py::arg("triangles"));
+  m.def("_integer_grid_quads", &integer_grid_quads, py::arg("vertices"), py::arg("elements"), py::kw_only(),
+        py::arg("rest"), py::arg("rest_elements"));
 }

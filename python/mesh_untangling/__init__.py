@@ -15,7 +15,7 @@ Arrays in, arrays out:
 
 The same run as ``untangle_mesh cube.input`` gives the same bits.  Functions:
 untangle(), check_local_invertibility(), read(), write(),
-project_on_best_fit_plane().  Errors: InvalidInputError (a ValueError),
+project_on_best_fit_plane(), integer_grid_quads().  Errors: InvalidInputError (a ValueError),
 ReadError and WriteError (OSErrors), ValueError and TypeError for arrays of
 the wrong shape or type.
 """
@@ -24,7 +24,8 @@ from ._mesh_untangling import (InvalidInputError, Mesh, ReadError, Result, Statu
                                __version__)
 from . import _mesh_untangling as _core
 
-__all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on_best_fit_plane", "Result", "Status",
+__all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on_best_fit_plane", "integer_grid_quads",
+           "Result", "Status",
            "Step", "Verdict", "Mesh", "InvalidInputError", "ReadError", "WriteError", "__version__"]
 
 
@@ -201,3 +202,21 @@ def project_on_best_fit_plane(vertices, triangles):
     as the rest, ``untangle(uv, triangles, rest=vertices)``.
     """
     return _core._project_on_best_fit_plane(vertices, triangles)
+
+
+def integer_grid_quads(vertices, elements, *, rest, rest_elements):
+    """The quad mesh that a seamless integer-grid map draws on its surface, as
+    quad remeshing extracts it: ``(points, quads, open_edges)``.
+
+    ``vertices`` (texture coordinates), ``elements``, ``rest`` (the surface's
+    vertices) and ``rest_elements`` (its triangles) are a seamless map as
+    read() and untangle() have them.  ``points`` (k x 3) are the integer
+    points of the map placed on the surface, ``quads`` (q x 4 int64) the unit
+    squares between them, counterclockwise as the triangles; a cone of angle
+    k pi / 2 is a vertex of valence k.  ``open_edges`` counts the grid edges
+    that leave through a boundary off the integer isolines (the squares they
+    cut are left out).  Raises InvalidInputError saying why there is no quad
+    mesh: a seam translation that is no integer, a cone off the integer
+    grid, a triangle that is not positive, a star that turns other than once.
+    """
+    return _core._integer_grid_quads(vertices, elements, rest=rest, rest_elements=rest_elements)

@@ -235,6 +235,20 @@ class Kinds(unittest.TestCase):
         output = os.path.join(self.dir.name, "torus-cli.obj")
         subprocess.run([CLI, path, "-o", output, "-q"], check=True)
         self.assertTrue(np.array_equal(uv, mu.read(output).vertices))
+        # the quad mesh: the CLI's, 36 quads on a 6 x 6 torus, 36 vertices
+        points, quads, open_edges = mu.integer_grid_quads(uv, mesh.elements, rest=mesh.rest,
+                                                          rest_elements=mesh.rest_elements)
+        self.assertEqual((points.shape, quads.shape, open_edges), ((36, 3), (36, 4), 0))
+        cli_quads = os.path.join(self.dir.name, "torus-quads.obj")
+        subprocess.run([CLI, path, "-o", output, "--quads", cli_quads, "-q"], check=True)
+        read_back = mu.read(cli_quads)
+        self.assertTrue(np.array_equal(read_back.elements, quads))
+        self.assertTrue(np.allclose(read_back.vertices, points, atol=1e-12))
+        with self.assertRaisesRegex(mu.InvalidInputError, "no quad mesh: the transition across seam edge .* not by "
+                                    "integers"):
+            mu.integer_grid_quads(uv * 1.3, mesh.elements, rest=mesh.rest, rest_elements=mesh.rest_elements)
+        with self.assertRaisesRegex(ValueError, "rest_elements"):
+            mu.integer_grid_quads(uv, mesh.elements, rest=mesh.rest, rest_elements=None)
 
     def test_seams_as_duplicated_vertices(self):
         # one v per vt (a seam vertex once per chart): welded into the torus's vertices, the same arrays
@@ -479,7 +493,7 @@ class Documentation(unittest.TestCase):
     def test_every_parameter_is_documented(self):
         import inspect
         for function in (mu.untangle, mu.check_local_invertibility, mu.read, mu.write,
-                         mu.project_on_best_fit_plane):
+                         mu.project_on_best_fit_plane, mu.integer_grid_quads):
             for name in inspect.signature(function).parameters:
                 self.assertIn(name, function.__doc__, "%s: %s is not documented" % (function.__name__, name))
 
