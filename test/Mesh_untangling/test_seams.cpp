@@ -529,6 +529,17 @@ void check_seam_chains()
     for(int i = 0; i < 5; ++i) points.push_back({double(i), double(j)});
   const auto seams = detect_seams(10, t, uv_of(points));
   CHECK(seams.seam_edges.size() == 1 && seams.seam_edges[0].transition.turns == 1);
+  {
+    // faces 9 and 10 repeat the directed edges (0, 1) of face 0 and (1, 2) of face 2: the first
+    // repeat in face order is named, with the face that had the edge first
+    auto twice = t;
+    twice.push_back({5, 6, 7});
+    twice.push_back({1, 2, 8});
+    twice.push_back({0, 1, 9});
+    std::vector<Uv> uv = uv_of(points);
+    for(int k = 0; k < 9; ++k) uv.push_back({double(k), 2.});
+    CHECK_THROWS_MESSAGE(detect_seams(10, twice, uv), "edge (1, 2) is used twice in the same direction (faces 2 and 9)");
+  }
   // the cut is one edge between two boundary vertices: collapsed, its chain has no other edge
   std::vector<Uv> collapsed = points;
   collapsed[7] = collapsed[2];

@@ -209,18 +209,44 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
   seams.tolerance = relative_tolerance * (extent > 0 ? extent : 1.);
   const double tolerance = seams.tolerance;
 
-  // directed edge (a, b) -> corner of a in its face
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> directed;
+  // directed edges (a, b, corner of a in its face), sorted (a sorted array,
+  // not a map: this runs on every check of a seamless map)
+  std::vector<std::array<std::size_t, 3>> directed;
+  directed.reserve(3 * m);
   for(std::size_t f = 0; f < m; ++f)
     for(int i = 0; i < 3; ++i) {
       const std::size_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
       if(a >= number_of_vertices || b >= number_of_vertices)
         throw Seam_error(f, "face " + std::to_string(f) + " refers to a vertex out of range");
-      if(!directed.emplace(std::make_pair(a, b), 3 * f + i).second)
-        throw Seam_error(f, "edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
-                              std::to_string(directed[{a, b}] / 3) + " and " + std::to_string(f) +
-                              "): the surface is not manifold or not consistently oriented");
+      directed.push_back({a, b, 3 * f + std::size_t(i)});
     }
+  std::sort(directed.begin(), directed.end());
+  {
+    // the first corner, in face order, whose directed edge an earlier corner has
+    std::size_t repeat = std::size_t(-1), first = 0;
+    for(std::size_t k = 1; k < directed.size(); ++k)
+      if(directed[k][0] == directed[k - 1][0] && directed[k][1] == directed[k - 1][1] && directed[k][2] < repeat) {
+        std::size_t j = k - 1;
+        while(j > 0 && directed[j - 1][0] == directed[k][0] && directed[j - 1][1] == directed[k][1]) --j;
+        repeat = directed[k][2];
+        first = directed[j][2];
+      }
+    if(repeat != std::size_t(-1)) {
+      const std::size_t f = repeat / 3, a = triangles[f][repeat % 3], b = triangles[f][(repeat % 3 + 1) % 3];
+      throw Seam_error(f, "edge " + edge_name(a, b) + " is used twice in the same direction (faces " +
+                            std::to_string(first / 3) + " and " + std::to_string(f) +
+                            "): the surface is not manifold or not consistently oriented");
+    }
+  }
+  // the edges out of a: directed[first_out[a]] to directed[first_out[a + 1] - 1]
+  std::vector<std::size_t> first_out(number_of_vertices + 1, 0);
+  for(const auto& e : directed) ++first_out[e[0] + 1];
+  std::partial_sum(first_out.begin(), first_out.end(), first_out.begin());
+  const auto corner_of = [&directed, &first_out](std::size_t a, std::size_t b) {
+    for(std::size_t k = first_out[a]; k < first_out[a + 1]; ++k)
+      if(directed[k][1] == b) return directed[k][2];
+    return std::size_t(-1);
+  };
 
   std::vector<std::size_t> parent(3 * m);   // union-find over corners: one class per wedge
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -233,14 +259,13 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
   // the seam edges whose transition their own uv cannot tell
   std::vector<std::array<std::size_t, 4>> seam_corners;
   std::vector<std::size_t> unknown;
-  for(const auto& [edge, c] : directed) {
-    const auto [a, b] = edge;
-    const auto twin = directed.find({b, a});
-    if(twin == directed.end()) { seams.vertex_on_boundary[a] = seams.vertex_on_boundary[b] = 1; continue; }
+  for(const auto& [a, b, c] : directed) {
+    const std::size_t twin = corner_of(b, a);
+    if(twin == std::size_t(-1)) { seams.vertex_on_boundary[a] = seams.vertex_on_boundary[b] = 1; continue; }
     if(a > b) continue;   // each interior edge once
-    const std::size_t f = c / 3, g = twin->second / 3;
+    const std::size_t f = c / 3, g = twin / 3;
     const std::size_t ca = c, cb = 3 * f + (c % 3 + 1) % 3;                 // a, b in f
-    const std::size_t gb = twin->second, ga = 3 * g + (gb % 3 + 1) % 3;   // b, a in g
+    const std::size_t gb = twin, ga = 3 * g + (gb % 3 + 1) % 3;   // b, a in g
     const std::string between = edge_name(a, b) + " between faces " + std::to_string(f) + " and " + std::to_string(g);
     if(!given.empty()) {
       const Seam_transition& t = given[c];
