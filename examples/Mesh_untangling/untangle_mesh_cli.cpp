@@ -843,10 +843,12 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   const Verdict verdict = check_mesh_file(written, run.fixed);
   const Seam_summary seams = compare_seams(given, written);
   const Grid_singularities grid_after = integer_grid_singularities(written);
-  const Quad_mesh quads = integer_grid_quad_mesh(written);
+  // (the quads only for whom reads them: the file, the report, the summary)
+  std::optional<Quad_mesh> quads;
+  if(!args.quads.empty() || !args.report.empty() || !args.quiet) quads = integer_grid_quad_mesh(written);
   if(!args.quads.empty()) {
-    if(quads.why_not.empty())
-      write_for(args.quads, [&] { IO::write_mesh_file(to.quads, quads.mesh); });
+    if(quads->why_not.empty())
+      write_for(args.quads, [&] { IO::write_mesh_file(to.quads, quads->mesh); });
     else
       files.withdraw(to.quads);
   }
@@ -860,7 +862,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   if(!args.report.empty())
     write_text_file(args.report, to.report, [&](std::ostream& out) {
       write_seamless_report(out, args, run.fixed_source, mesh, run.result, before, verdict, seams, grid_before,
-                            grid_after, quads);
+                            grid_after, *quads);
     });
   files.commit();
   if(!args.quiet) {
@@ -884,19 +886,19 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)%s\n",
                  grid_before.singular, grid_after.singular, grid_after.at_vertices,
                  free ? "; translations free: the grid is not aligned with the seams any more" : "");
-    if(quads.why_not.empty())
-      std::fprintf(stderr, "integer-grid quads: %zu on %zu vertices%s\n", quads.mesh.cells.size(),
-                   quads.mesh.rest.size(),
-                   quads.open_edges != 0 ? " (the boundary cuts the grid: its cut squares are left out)" : "");
+    if(quads->why_not.empty())
+      std::fprintf(stderr, "integer-grid quads: %zu on %zu vertices%s\n", quads->mesh.cells.size(),
+                   quads->mesh.rest.size(),
+                   quads->open_edges != 0 ? " (the boundary cuts the grid: its cut squares are left out)" : "");
     if(!verdict.locally_invertible)
       std::fprintf(stderr, "why: %s\n", run.result.message.empty() ? MU::to_string(run.result.status).c_str()
                                                                    : run.result.message.c_str());
   }
   // Said even with --quiet: a file asked for is not written.
-  if(!args.quads.empty() && !quads.why_not.empty())
-    std::fprintf(stderr, "untangle_mesh: no quad mesh, %s not written: %s\n", args.quads.c_str(), quads.why_not.c_str());
+  if(!args.quads.empty() && !quads->why_not.empty())
+    std::fprintf(stderr, "untangle_mesh: no quad mesh, %s not written: %s\n", args.quads.c_str(), quads->why_not.c_str());
   const int code = exit_code(verdict);
-  return code == 0 && !args.quads.empty() && !quads.why_not.empty() ? 1 : code;
+  return code == 0 && !args.quads.empty() && !quads->why_not.empty() ? 1 : code;
 }
 
 int run(const Arguments& args)

@@ -210,17 +210,35 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
   const double tolerance = seams.tolerance;
 
   // directed edges (a, b, corner of a in its face), sorted (a sorted array,
-  // not a map: this runs on every check of a seamless map)
-  std::vector<std::array<std::size_t, 3>> directed;
-  directed.reserve(3 * m);
+  // not a map: this runs on every check of a seamless map); bucketed by a,
+  // in corner order, then each vertex's few edges sorted by b
   for(std::size_t f = 0; f < m; ++f)
-    for(int i = 0; i < 3; ++i) {
-      const std::size_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
-      if(a >= number_of_vertices || b >= number_of_vertices)
+    for(int i = 0; i < 3; ++i)
+      if(triangles[f][i] >= number_of_vertices)
         throw Seam_error(f, "face " + std::to_string(f) + " refers to a vertex out of range");
-      directed.push_back({a, b, 3 * f + std::size_t(i)});
+  // the edges out of a: directed[first_out[a]] to directed[first_out[a + 1] - 1]
+  std::vector<std::size_t> first_out(number_of_vertices + 1, 0);
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i) ++first_out[t[i] + 1];
+  std::partial_sum(first_out.begin(), first_out.end(), first_out.begin());
+  std::vector<std::array<std::size_t, 3>> directed(3 * m);
+  {
+    std::vector<std::size_t> next(first_out.begin(), first_out.end() - 1);
+    for(std::size_t f = 0; f < m; ++f)
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t a = triangles[f][i];
+        directed[next[a]++] = {a, triangles[f][(i + 1) % 3], 3 * f + std::size_t(i)};
+      }
+    // stable, so that equal edges stay in corner order; an insertion sort
+    // for the handful of edges of a usual star, not for a huge fan
+    const auto by_end = [](const std::array<std::size_t, 3>& x, const std::array<std::size_t, 3>& y) { return x[1] < y[1]; };
+    for(std::size_t a = 0; a < number_of_vertices; ++a) {
+      const auto begin = directed.begin() + std::ptrdiff_t(first_out[a]), end = directed.begin() + std::ptrdiff_t(first_out[a + 1]);
+      if(end - begin > 32) { std::stable_sort(begin, end, by_end); continue; }
+      for(auto k = begin + (begin != end); k < end; ++k)
+        for(auto j = k; j > begin && by_end(*j, *(j - 1)); --j) std::iter_swap(j - 1, j);
     }
-  std::sort(directed.begin(), directed.end());
+  }
   {
     // the first corner, in face order, whose directed edge an earlier corner has
     std::size_t repeat = std::size_t(-1), first = 0;
@@ -238,10 +256,6 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
                             "): the surface is not manifold or not consistently oriented");
     }
   }
-  // the edges out of a: directed[first_out[a]] to directed[first_out[a + 1] - 1]
-  std::vector<std::size_t> first_out(number_of_vertices + 1, 0);
-  for(const auto& e : directed) ++first_out[e[0] + 1];
-  std::partial_sum(first_out.begin(), first_out.end(), first_out.begin());
   const auto corner_of = [&directed, &first_out](std::size_t a, std::size_t b) {
     for(std::size_t k = first_out[a]; k < first_out[a + 1]; ++k)
       if(directed[k][1] == b) return directed[k][2];
@@ -266,8 +280,8 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
     const std::size_t f = c / 3, g = twin / 3;
     const std::size_t ca = c, cb = 3 * f + (c % 3 + 1) % 3;                 // a, b in f
     const std::size_t gb = twin, ga = 3 * g + (gb % 3 + 1) % 3;   // b, a in g
-    const std::string between = edge_name(a, b) + " between faces " + std::to_string(f) + " and " + std::to_string(g);
     if(!given.empty()) {
+      const std::string between = edge_name(a, b) + " between faces " + std::to_string(f) + " and " + std::to_string(g);
       const Seam_transition& t = given[c];
       const double miss = (std::max)(norm(minus(t(corner_uv[ca]), corner_uv[ga])), norm(minus(t(corner_uv[cb]), corner_uv[gb])));
       if(!(miss <= tolerance))
@@ -296,12 +310,15 @@ inline Seams detect_seams(std::size_t number_of_vertices, const std::vector<std:
       seam_corners.push_back({ca, cb, ga, gb});
       continue;
     }
+    // (the nearest rotation by squared distances: no square root per try)
     int best = 0;
-    double best_error = std::numeric_limits<double>::infinity();
+    double best_squared = std::numeric_limits<double>::infinity();
     for(int k = 0; k < 4; ++k) {
-      const double error = norm(minus(turned(k, ef), eg));
-      if(error < best_error) { best_error = error; best = k; }
+      const Uv d = minus(turned(k, ef), eg);
+      const double squared = d[0] * d[0] + d[1] * d[1];
+      if(squared < best_squared) { best_squared = squared; best = k; }
     }
+    const double best_error = norm(minus(turned(best, ef), eg));
     Seam_transition t{best, minus(corner_uv[ga], turned(best, corner_uv[ca]))};
     if(!(best_error <= tolerance))
       throw Seam_error(f, "seam edge " + edge_name(a, b) + " between faces " + std::to_string(f) + " and " +
@@ -465,13 +482,14 @@ inline Wedge_links link_wedges(const Seams& seams, std::size_t number_of_vertice
         const int turns = ((loop.turns % 4) + 4) % 4;
         const Uv centre = seams.wedge_uv[root];
         const double miss = norm(minus(loop(centre), centre));
-        const std::string where = "vertex " + std::to_string(v) + " (face " + std::to_string(arc.face) + ")";
-        if(turns == 0 && miss > 4 * seams.tolerance)
-          throw Seam_error(arc.face, "the seam transitions around " + where + " do not close: a translation of " +
-                                       std::to_string(miss) + " is left after a full turn");
-        if(turns != 0 && miss > 4 * seams.tolerance)
+        if(miss > 4 * seams.tolerance) {
+          const std::string where = "vertex " + std::to_string(v) + " (face " + std::to_string(arc.face) + ")";
+          if(turns == 0)
+            throw Seam_error(arc.face, "the seam transitions around " + where + " do not close: a translation of " +
+                                         std::to_string(miss) + " is left after a full turn");
           throw Seam_error(arc.face, "cone " + where + " is not at the centre of the rotation its seam transitions "
                                        "make (" + std::to_string(miss) + " away)");
+        }
         if(turns != 0) holonomy[v] = turns;
         cone[v] = cone[v] || turns != 0;
       }
