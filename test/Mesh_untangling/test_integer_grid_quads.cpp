@@ -15,6 +15,7 @@
 
 #include <CGAL/Mesh_untangling/integer_grid_quads.h>
 
+#include "mesh_file_arrays.h"
 #include "seamless_generators.h"
 
 #include <cmath>
@@ -33,26 +34,11 @@ using Uv2 = std::array<double, 2>;
 
 namespace {
 
-std::vector<std::array<std::size_t, 3>> triangles_of(const Mesh_file& m)
-{
-  std::vector<std::array<std::size_t, 3>> t;
-  for(const auto& s : m.simplices) t.push_back({s[0], s[1], s[2]});
-  return t;
-}
-
-std::vector<Uv2> corner_uv_of(const Mesh_file& m)
-{
-  std::vector<Uv2> uv;
-  for(const auto& s : m.simplex_corner_map)
-    for(int i = 0; i < 3; ++i) uv.push_back({m.corner_map[s[i]][0], m.corner_map[s[i]][1]});
-  return uv;
-}
-
-MU::Integer_grid_quads quads_of(const Mesh_file& m) { return MU::extract_integer_grid_quads(m.rest, triangles_of(m), corner_uv_of(m)); }
+MU::Integer_grid_quads quads_of(const Mesh_file& m) { return MU::extract_integer_grid_quads(m.rest, tools::simplices_of<2>(m), tools::corner_uv_of(m)); }
 
 double uv_area(const Mesh_file& m)
 {
-  const auto uv = corner_uv_of(m);
+  const auto uv = tools::corner_uv_of(m);
   double area = 0;
   for(std::size_t f = 0; f < uv.size() / 3; ++f) {
     const Uv2 &a = uv[3 * f], &b = uv[3 * f + 1], &c = uv[3 * f + 2];
@@ -209,8 +195,8 @@ int main()
   }
   {
     const Mesh_file m = tools::make_seamless_torus(4);
-    CHECK_THROWS_MESSAGE(MU::extract_integer_grid_quads(m.rest, triangles_of(m), {}), "corner uv for");
-    CHECK_THROWS_MESSAGE(MU::extract_integer_grid_quads({}, triangles_of(m), corner_uv_of(m)), "refers to vertex");
+    CHECK_THROWS_MESSAGE(MU::extract_integer_grid_quads(m.rest, tools::simplices_of<2>(m), {}), "corner uv for");
+    CHECK_THROWS_MESSAGE(MU::extract_integer_grid_quads({}, tools::simplices_of<2>(m), tools::corner_uv_of(m)), "refers to vertex");
   }
   return test::exit_code();
 }

@@ -17,6 +17,7 @@
 #include <CGAL/Mesh_untangling/seamless_invertibility.h>
 #include <CGAL/untangle_mesh.h>
 
+#include "mesh_file_arrays.h"
 #include "seamless_generators.h"
 #include "seamless_surface.h"
 
@@ -36,24 +37,9 @@ namespace {
 
 using Uv = MU::internal::Uv;
 
-std::vector<Uv> corner_uv(const Mesh_file& m)
-{
-  std::vector<Uv> uv;
-  for(const auto& f : m.simplex_corner_map)
-    for(int c = 0; c < 3; ++c) uv.push_back({m.corner_map[f[c]][0], m.corner_map[f[c]][1]});
-  return uv;
-}
-
-std::vector<std::array<std::size_t, 3>> triangles(const Mesh_file& m)
-{
-  std::vector<std::array<std::size_t, 3>> t;
-  for(const auto& s : m.simplices) t.push_back({s[0], s[1], s[2]});
-  return t;
-}
-
 MU::internal::Seams seams_of(const Mesh_file& m)
 {
-  return MU::internal::detect_seams(m.rest.size(), triangles(m), corner_uv(m));
+  return MU::internal::detect_seams(m.rest.size(), tools::simplices_of<2>(m), tools::corner_uv_of(m));
 }
 
 /// A seam edge of `m` as the corner map `uv` has it: how far its two sides
@@ -83,7 +69,7 @@ Seam_edge_now measure_seam_edge(const Mesh_file& m, const MU::internal::Seams::E
 /// Triangles negative in their chart (floating orientation; the result's own verdict is exact).
 std::size_t negative_triangles(const Mesh_file& m)
 {
-  const auto uv = corner_uv(m);
+  const auto uv = tools::corner_uv_of(m);
   std::size_t count = 0;
   for(std::size_t k = 0; k < m.simplices.size(); ++k) {
     const Uv a = MU::internal::minus(uv[3 * k + 1], uv[3 * k]), b = MU::internal::minus(uv[3 * k + 2], uv[3 * k]);
@@ -109,7 +95,7 @@ void check_transitions_kept(const Mesh_file& before, const Mesh_file& after, con
     worst = std::max(worst, MU::internal::norm(MU::internal::minus(a.transition.translation, b.transition.translation)));
   }
   // and the two sides of every seam edge agree through it, at both ends
-  const auto uv = corner_uv(after);
+  const auto uv = tools::corner_uv_of(after);
   double gap = 0;
   for(const auto& e : s1.seam_edges) {
     const std::size_t ca = 3 * e.face + e.corner, cb = 3 * e.face + (e.corner + 1) % 3;
@@ -185,7 +171,7 @@ void check_untangles_free(Mesh_file m, const std::string& name, double amplitude
   std::vector<char> cone;
   const auto links = MU::internal::link_wedges(before, m.rest.size(), {}, cone);
   const auto layout = MU::internal::free_translation_layout(before, links, cone, {});
-  const auto uv = corner_uv(m);
+  const auto uv = tools::corner_uv_of(m);
   std::vector<std::vector<Uv>> per_seam(layout.number_of_chains());
   double rotation_error = 0, moved = 0;
   for(std::size_t e = 0; e < before.seam_edges.size(); ++e) {
@@ -650,7 +636,7 @@ void check_free_translation_layout()
     CHECK_MESSAGE(tau_change.norm() > 0.1, name << ": the translations did not move");
     std::vector<char> moved_cone;
     try {
-      MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), uv), m.rest.size(), {}, moved_cone);
+      MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), tools::simplices_of<2>(m), uv), m.rest.size(), {}, moved_cone);
       CHECK(moved_cone == cone);
     } catch(const std::exception& e) {
       CHECK_MESSAGE(false, name << ": the moved map's seams are refused: " << e.what());
@@ -681,7 +667,7 @@ void check_free_translation_layout()
       const std::vector<Uv> y = unbound.positions(links, keep, one);
       std::vector<Uv> broken(uv.size());
       for(std::size_t c = 0; c < uv.size(); ++c) broken[c] = y[seams.wedge_of_corner[c]];
-      CHECK_THROWS(MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), triangles(m), broken),
+      CHECK_THROWS(MU::internal::link_wedges(MU::internal::detect_seams(m.rest.size(), tools::simplices_of<2>(m), broken),
                                              m.rest.size(), {}, moved_cone));
     }
   }

@@ -34,6 +34,17 @@ std::vector<std::array<std::size_t, d + 1>> simplices_of(const CGAL::Mesh_untang
   return s;
 }
 
+/// The texture coordinates of a per-corner map (seams): that of corner i of
+/// triangle f at 3 f + i, as the seam functions take them.
+inline std::vector<std::array<double, 2>> corner_uv_of(const CGAL::Mesh_untangling::IO::Mesh_file& mesh)
+{
+  std::vector<std::array<double, 2>> uv;
+  uv.reserve(3 * mesh.simplex_corner_map.size());
+  for(const auto& f : mesh.simplex_corner_map)
+    for(int i = 0; i < 3; ++i) uv.push_back({mesh.corner_map[f[i]][0], mesh.corner_map[f[i]][1]});
+  return uv;
+}
+
 } // namespace Mesh_untangling_tools
 
 #endif // MESH_UNTANGLING_TOOLS_MESH_FILE_ARRAYS_H

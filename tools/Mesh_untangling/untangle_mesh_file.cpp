@@ -489,20 +489,10 @@ Untangling_result untangle_seamless(Mesh_file& mesh, const std::vector<bool>& is
   return result;
 }
 
-std::vector<std::array<std::size_t, 3>> triangles_of(const Mesh_file& mesh)
-{
-  std::vector<std::array<std::size_t, 3>> t;
-  for(const auto& s : mesh.simplices) t.push_back({s[0], s[1], s[2]});
-  return t;
-}
-
 MU::internal::Seams seams_of(const Mesh_file& mesh)
 {
-  std::vector<MU::internal::Uv> uv;
-  for(const auto& f : mesh.simplex_corner_map)
-    for(int c = 0; c < 3; ++c) uv.push_back({mesh.corner_map[f[c]][0], mesh.corner_map[f[c]][1]});
   try {
-    return MU::internal::detect_seams(mesh.rest.size(), triangles_of(mesh), uv);
+    return MU::internal::detect_seams(mesh.rest.size(), simplices_of<2>(mesh), corner_uv_of(mesh));
   } catch(const std::invalid_argument& e) {
     throw Invalid_problem(e.what());
   }
@@ -618,10 +608,7 @@ Grid_singularities integer_grid_singularities(const Mesh_file& mesh)
 Quad_mesh integer_grid_quad_mesh(const Mesh_file& mesh)
 {
   check_seamless_shape(mesh, {});
-  std::vector<std::array<double, 2>> uv;
-  for(const auto& f : mesh.simplex_corner_map)
-    for(int c = 0; c < 3; ++c) uv.push_back({mesh.corner_map[f[c]][0], mesh.corner_map[f[c]][1]});
-  const MU::Integer_grid_quads q = MU::extract_integer_grid_quads(mesh.rest, triangles_of(mesh), uv);
+  const MU::Integer_grid_quads q = MU::extract_integer_grid_quads(mesh.rest, simplices_of<2>(mesh), corner_uv_of(mesh));
   Quad_mesh out;
   out.open_edges = q.open_edges;
   out.why_not = q.not_extracted;

@@ -53,7 +53,7 @@ inline std::array<double, 3> point_on_surface(const Integer_grid_charts& c, cons
   };
   const auto cross = [](const Uv& a, const Uv& b) { return a[0] * b[1] - a[1] * b[0]; };
   const std::size_t f = g.face;
-  if(g.kind == Grid_point::AT_VERTEX) return surface[c.vertex(g.halfedge)];
+  if(g.kind == Grid_point::AT_VERTEX) return surface[c.vertex(g.corner)];
   if(g.kind == Grid_point::IN_EDGE) {
     const int i = int(g.halfedge % 3);
     const Uv e = minus(c.uv_at(f, (i + 1) % 3), c.uv_at(f, i)), d = minus(g.p, c.uv_at(f, i));

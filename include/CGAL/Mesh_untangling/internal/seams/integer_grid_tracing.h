@@ -31,8 +31,9 @@ namespace internal {
 struct Grid_point
 {
   enum Kind { IN_FACE, IN_EDGE, AT_VERTEX } kind;
-  std::size_t face;   // IN_FACE: its face; IN_EDGE: the face of `halfedge`; AT_VERTEX: a face of its vertex
-  std::size_t halfedge;   // IN_EDGE: the edge's halfedge of the lower id; AT_VERTEX: the corner 3 face + i
+  std::size_t face;       // IN_FACE: its face; IN_EDGE: the face of `halfedge`; AT_VERTEX: that of `corner`
+  std::size_t halfedge;   // IN_EDGE: the edge's halfedge of the lower id
+  std::size_t corner;     // AT_VERTEX: a corner 3 face + i of its vertex
   Uv p;                   // in the chart of `face`
 };
 
@@ -126,6 +127,7 @@ public:
 private:
   struct Ray { Uv p, q; int direction; };
   struct Turned { std::size_t face; int corner; Seam_transition transition; };
+  enum Sense { COUNTERCLOCKWISE, CLOCKWISE };
   using Key = std::array<long long, 4>;
 
   static int quarter(int k) { return ((k % 4) + 4) % 4; }
@@ -168,23 +170,34 @@ private:
     return in_sector(minus(c_.uv_at(f, (i + 1) % 3), v), minus(c_.uv_at(f, (i + 2) % 3), v), k, last);
   }
 
+  /// One step around the vertex of corner (f, i) to the next corner in
+  /// `sense`, across the edge before the corner (counterclockwise) or after
+  /// it (clockwise): the halfedge crossed, or no_halfedge at the boundary
+  /// (f and i unchanged).
+  std::size_t step_around(std::size_t& f, int& i, Sense sense) const
+  {
+    const std::size_t h = sense == COUNTERCLOCKWISE ? 3 * f + std::size_t(i + 2) % 3 : 3 * f + std::size_t(i);
+    const std::size_t o = c_.opposite[h];
+    if(o == no_halfedge) return no_halfedge;
+    f = o / 3;
+    i = sense == COUNTERCLOCKWISE ? int(o % 3) : int(o + 1) % 3;
+    return h;
+  }
+
   /// The corner around the vertex of corner (f, i) whose sector holds
   /// direction k (in the chart of f), turning counterclockwise and then, at
   /// the boundary, clockwise; `face == none` when none does.
   Turned around_vertex(std::size_t f, int i, int k, bool including_this_corner) const
   {
     if(including_this_corner && in_corner(f, i, k)) return {f, i, Seam_transition{}};
-    for(int sense = 0; sense < 2; ++sense) {
+    for(const Sense sense : {COUNTERCLOCKWISE, CLOCKWISE}) {
       std::size_t g = f;
       int j = i;
       Seam_transition t;
       for(std::size_t step = 0; step < 3 * c_.triangles.size(); ++step) {
-        const std::size_t h = sense == 0 ? 3 * g + std::size_t(j + 2) % 3 : 3 * g + std::size_t(j);
-        const std::size_t o = c_.opposite[h];
-        if(o == no_halfedge) break;
+        const std::size_t h = step_around(g, j, sense);
+        if(h == no_halfedge) break;
         t = c_.across[h].after(t);
-        g = o / 3;
-        j = sense == 0 ? int(o % 3) : int(o + 1) % 3;
         if(g == f && j == i) return {none, 0, {}};   // once around: no corner holds it
         if(in_corner(g, j, quarter(k + t.turns))) return {g, j, t};
       }
@@ -225,15 +238,15 @@ private:
         if(o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
         const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
         if(zeros == 0) {
-          add_point({0, (long long)f, x, y}, {Grid_point::IN_FACE, f, none, p});
+          add_point({0, (long long)f, x, y}, {Grid_point::IN_FACE, f, none, none, p});
         } else if(zeros == 1) {
           const std::size_t h = 3 * f + std::size_t(o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2);
           if(c_.opposite[h] != no_halfedge && c_.opposite[h] < h) continue;   // the other side finds it
-          add_point({1, (long long)h, x, y}, {Grid_point::IN_EDGE, f, h, p});
+          add_point({1, (long long)h, x, y}, {Grid_point::IN_EDGE, f, h, none, p});
         } else {
           const int i = o[0] != 0 ? 2 : o[1] != 0 ? 0 : 1;   // the corner between the two edges through p
           add_point({2, (long long)c_.vertex(3 * f + std::size_t(i)), 0, 0},
-                    {Grid_point::AT_VERTEX, f, 3 * f + std::size_t(i), p});
+                    {Grid_point::AT_VERTEX, f, none, 3 * f + std::size_t(i), p});
         }
       }
     }
@@ -265,23 +278,17 @@ private:
     } else {
       // from the first corner counterclockwise (after the boundary, if any), once around
       std::size_t f = point.face;
-      int i = int(point.halfedge % 3);
+      int i = int(point.corner % 3);
       for(std::size_t step = 0; step < 3 * c_.triangles.size(); ++step) {
-        const std::size_t o = c_.opposite[3 * f + std::size_t(i)];
-        if(o == no_halfedge) { on_boundary_.back() = 1; break; }
-        f = o / 3;
-        i = int(o + 1) % 3;
-        if(f == point.face && i == int(point.halfedge % 3)) break;
+        if(step_around(f, i, CLOCKWISE) == no_halfedge) { on_boundary_.back() = 1; break; }
+        if(f == point.face && i == int(point.corner % 3)) break;
       }
       const std::size_t first_face = f;
       const int first_corner = i;
       for(std::size_t step = 0; step < 3 * c_.triangles.size(); ++step) {
         const Uv& v = c_.uv_at(f, i);
         add_sorted(f, v, minus(c_.uv_at(f, (i + 1) % 3), v), [&](int k) { return in_corner(f, i, k); });
-        const std::size_t o = c_.opposite[3 * f + std::size_t(i + 2) % 3];
-        if(o == no_halfedge) break;
-        f = o / 3;
-        i = int(o % 3);
+        if(step_around(f, i, COUNTERCLOCKWISE) == no_halfedge) break;
         if(f == first_face && i == first_corner) break;
       }
     }
