@@ -124,7 +124,7 @@ using IO::internal::lowercase_extension;
 
 bool is_mesh_extension(const std::string& ext)
 {
-  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".mesh" || ext == ".input";
+  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".mesh" || ext == ".msh" || ext == ".input";
 }
 
 std::string default_output(const std::string& input)
@@ -150,7 +150,7 @@ void check_output_paths(const Arguments& args)
   const std::string ext = lowercase_extension(args.output);
   if(!is_mesh_extension(ext))
     throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
-                      "' (supported: .obj .off .vtk .mesh .input)");
+                      "' (supported: .obj .off .vtk .mesh .msh .input)");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
   const std::pair<const char*, const std::string*> outputs[] = {
@@ -297,11 +297,11 @@ void check_output_format(const std::string& output, const Mesh_file& mesh)
 {
   const std::string ext = lowercase_extension(output);
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
-    throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .mesh or .input)");
+    throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .mesh, .msh or .input)");
   if(mesh.cell_size == 8 && (ext == ".obj" || ext == ".off" || ext == ".input"))
-    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk or .mesh)");
+    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk, .mesh or .msh)");
   if(mesh.cell_size == 4 && ext == ".input")
-    throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .mesh, .obj or .off)");
+    throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .mesh, .msh, .obj or .off)");
   if(ext == ".input" && mesh.rest.empty())
     throw Usage_error(output + ": the .input format needs rest positions (give --rest)");
 }
@@ -317,10 +317,10 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
                       " (their corner simplices overlap: fix the boundary)");
   const std::string ext = lowercase_extension(args.phantoms);
   if(!is_mesh_extension(ext) || ext == ".input")
-    throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .mesh, .off "
-                      "or .obj file (.vtk carries the fields)");
+    throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .mesh, .msh, "
+                      ".off or .obj file (.vtk carries the fields)");
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
-    throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk or .mesh)");
+    throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk, .mesh or .msh)");
 }
 
 /// The map as it reads back from the written file.
@@ -1001,8 +1001,8 @@ int main(int argc, char** argv)
                "locally invertible (cells: every corner simplex positive).\n"
                "Exit code: 0 locally invertible, 1 not (result written anyway), 2 bad usage or input, 3 inverted "
                "elements whose vertices are all fixed are left (nothing can repair them; result written)."};
-  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .input; "
-                 "triangles, tetrahedra, quadrilaterals (.obj .off .vtk .mesh) or hexahedra (.vtk .mesh)")
+  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .msh (Gmsh), .input; "
+                 "triangles, tetrahedra, quadrilaterals (.obj .off .vtk .mesh .msh) or hexahedra (.vtk .mesh .msh)")
     ->required();
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
   auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based; empty: none); default: "

@@ -764,7 +764,7 @@ void test_handles_and_common_errors()
     IO::read_mesh_file(write_text("mesh.stl", "solid"));
     report_failure(__LINE__, "no Read_error for .stl");
   } catch(const Read_error& e) {
-    CHECK(std::string(e.what()).find("unsupported file extension '.stl' (supported: .obj .off .vtk .mesh .input)")
+    CHECK(std::string(e.what()).find("unsupported file extension '.stl' (supported: .obj .off .vtk .mesh .msh .input)")
           != std::string::npos);
   }
 }
@@ -857,7 +857,7 @@ void test_writer_errors()
   bad = tets;
   bad.fixed = {7};
   CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("fixed.input"), bad), "fixed vertex id 7 is out of range");
-  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("out.ply"), tets), "(supported: .obj .off .vtk .mesh .input)");
+  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("out.ply"), tets), "(supported: .obj .off .vtk .mesh .msh .input)");
   CHECK(read_text(target) == before);
   CHECK(!fs::exists(temp_path("bad.input")) && !fs::exists(temp_path("tets.obj")) && !fs::exists(temp_path("out.ply")));
 

@@ -16,7 +16,7 @@ namespace IO {
 /// \ingroup PkgMeshUntanglingIO
 /// What a mesh file holds, independent of its format.
 ///
-/// Formats with one geometry (OFF, VTK, MEDIT) store it in `map` and leave
+/// Formats with one geometry (OFF, VTK, MEDIT, Gmsh) store it in `map` and leave
 /// `rest` empty; OBJ stores `v` in `rest` and `vt` in `map`; the Du et al.
 /// `.input` format fills everything. A dimension is 2 when the format is 2D
 /// or every z is exactly 0 (never for tetrahedra or hexahedra), else 3.
@@ -28,7 +28,7 @@ namespace IO {
 ///
 /// A mesh holds simplices or cells (quadrilaterals, hexahedra), never both:
 /// readers reject a file that mixes them, naming its line.  Hexahedra are in
-/// VTK's vertex order (MEDIT's is the same): 0 1 2 3 the bottom face, counter-
+/// VTK's vertex order (MEDIT's and Gmsh's are the same): 0 1 2 3 the bottom face, counter-
 /// clockwise seen from above, 4 5 6 7 the top face, vertex 4 above 0.
 struct Mesh_file
 {

@@ -17,7 +17,8 @@ namespace IO {
 /// `what()` reads "<file>:<line>: <reason>", or "<file>: <reason>" when the
 /// problem has no line (e.g. a missing file). Element numbers and vertex
 /// indices in `reason()` use the file's own numbering (1-based for OBJ and
-/// MEDIT, 0-based otherwise), so that they can be looked up in the file.
+/// MEDIT, the node and element tags of Gmsh, 0-based otherwise), so that they
+/// can be looked up in the file.
 class Read_error : public std::runtime_error
 {
 public:

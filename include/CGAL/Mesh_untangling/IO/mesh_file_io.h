@@ -3,6 +3,7 @@
 #ifndef CGAL_MESH_UNTANGLING_IO_MESH_FILE_IO_H
 #define CGAL_MESH_UNTANGLING_IO_MESH_FILE_IO_H
 
+#include <CGAL/Mesh_untangling/IO/GMSH.h>
 #include <CGAL/Mesh_untangling/IO/MEDIT.h>
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
@@ -20,7 +21,7 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-inline const char* supported_extensions() { return "supported: .obj .off .vtk .mesh .input"; }
+inline const char* supported_extensions() { return "supported: .obj .off .vtk .mesh .msh .input"; }
 
 inline std::string lowercase_extension(const std::string& path)
 {
@@ -41,7 +42,7 @@ inline std::string unsupported_extension(const std::string& path)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a mesh file, choosing the format from the extension (case-insensitive):
-/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT) or `.input` (Du et al.);
+/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT), `.msh` (Gmsh) or `.input` (Du et al.);
 /// `welding` applies to OBJ files (read_OBJ()).
 /// \throws Read_error if the extension is not one of these, or as the reader does.
 inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& welding = OBJ_welding())
@@ -55,6 +56,8 @@ inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& weld
     return read_VTK(path);
   if(extension == ".mesh")
     return read_MEDIT(path);
+  if(extension == ".msh")
+    return read_GMSH(path);
   if(extension == ".input")
     return read_TLC_input(path);
   throw Read_error(path, 0, internal::unsupported_extension(path));
@@ -74,6 +77,8 @@ inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
     return write_VTK(path, mesh);
   if(extension == ".mesh")
     return write_MEDIT(path, mesh);
+  if(extension == ".msh")
+    return write_GMSH(path, mesh);
   if(extension == ".input")
     return write_TLC_input(path, mesh);
   throw Write_error(path, internal::unsupported_extension(path));

@@ -94,7 +94,7 @@ struct Single_geometry
   int dimension;
 };
 
-// Formats with one geometry (OFF, VTK, MEDIT) write the map, the positions a
+// Formats with one geometry (OFF, VTK, MEDIT, Gmsh) write the map, the positions a
 // user wants to see; the rest only when there is no map.
 inline Single_geometry single_geometry(const Mesh_file& mesh)
 {

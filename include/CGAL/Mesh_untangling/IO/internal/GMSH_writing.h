@@ -1,0 +1,145 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The sections of a Gmsh MSH 4.1 ASCII file, as write_GMSH() writes them.
+#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_GMSH_WRITING_H
+#define CGAL_MESH_UNTANGLING_IO_INTERNAL_GMSH_WRITING_H
+
+#include <CGAL/Mesh_untangling/IO/Mesh_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace IO {
+namespace internal {
+
+// The elements of a Mesh_file as Gmsh sees them.
+struct GMSH_mesh_elements
+{
+  int dimension;     // of the entity that holds the nodes and elements: 3 for volumes, else 2
+  int type;          // Gmsh's element type (2, 3, 4, 5); 0: no element
+  int size;          // nodes per element
+  std::size_t count;
+};
+
+inline GMSH_mesh_elements GMSH_elements_of(const Mesh_file& mesh)
+{
+  if(!mesh.cells.empty())
+    return {mesh.cell_size == 8 ? 3 : 2, mesh.cell_size == 8 ? 5 : 3, mesh.cell_size, mesh.cells.size()};
+  if(!mesh.simplices.empty())
+    return {mesh.simplex_size == 4 ? 3 : 2, mesh.simplex_size == 4 ? 4 : 2, mesh.simplex_size, mesh.simplices.size()};
+  return {mesh.simplex_size == 4 || mesh.cell_size == 8 ? 3 : 2, 0, 0, 0};
+}
+
+// One point entity per fixed vertex, in the physical group `fixed` (tag 1),
+// then the one entity of the mesh, boxed by its points.
+inline void write_GMSH_entities(std::ostream& out, const std::vector<std::size_t>& fixed,
+                                const GMSH_mesh_elements& elements, const std::vector<std::array<double, 3>>& points)
+{
+  std::array<double, 3> low = {0, 0, 0}, high = {0, 0, 0};
+  if(!points.empty())
+    low = high = points.front();
+  for(const std::array<double, 3>& p : points)
+    for(int c = 0; c < 3; ++c) {
+      low[c] = (std::min)(low[c], p[c]);
+      high[c] = (std::max)(high[c], p[c]);
+    }
+  out << "$Entities\n";
+  write_number(out, fixed.size());
+  out << " 0 " << (elements.dimension == 2 ? "1 0\n" : "0 1\n");
+  for(std::size_t i = 0; i < fixed.size(); ++i) {
+    write_number(out, i + 1);
+    out << ' ';
+    write_point(out, points[fixed[i]], 3);
+    out << " 1 1\n";
+  }
+  out << "1 ";
+  write_point(out, low, 3);
+  out << ' ';
+  write_point(out, high, 3);
+  out << " 0 0\n$EndEntities\n";
+}
+
+// All nodes in the mesh's entity, tagged 1 to n in the order of the ids.
+inline void write_GMSH_nodes(std::ostream& out, const GMSH_mesh_elements& elements,
+                             const std::vector<std::array<double, 3>>& points)
+{
+  const std::size_t n = points.size();
+  out << "$Nodes\n";
+  if(n == 0) {
+    out << "0 0 0 0\n$EndNodes\n";
+    return;
+  }
+  out << "1 ";
+  write_number(out, n);
+  out << " 1 ";
+  write_number(out, n);
+  out << '\n' << elements.dimension << " 1 0 ";
+  write_number(out, n);
+  out << '\n';
+  for(std::size_t i = 1; i <= n; ++i) {
+    write_number(out, i);
+    out << '\n';
+  }
+  for(const std::array<double, 3>& p : points) {
+    write_point(out, p, 3);
+    out << '\n';
+  }
+  out << "$EndNodes\n";
+}
+
+// The mesh's elements, then one point element per fixed vertex.
+inline void write_GMSH_elements(std::ostream& out, const Mesh_file& mesh, const std::vector<std::size_t>& fixed,
+                                const GMSH_mesh_elements& elements)
+{
+  const std::size_t blocks = (elements.count != 0 ? 1 : 0) + fixed.size();
+  const std::size_t count = elements.count + fixed.size();
+  out << "$Elements\n";
+  write_number(out, blocks);
+  out << ' ';
+  write_number(out, count);
+  out << (count == 0 ? " 0 " : " 1 ");
+  write_number(out, count);
+  out << '\n';
+  std::size_t tag = 0;
+  if(elements.count != 0) {
+    out << elements.dimension << " 1 " << elements.type << ' ';
+    write_number(out, elements.count);
+    out << '\n';
+    const auto write_element = [&](const auto& ids) {
+      write_number(out, ++tag);
+      for(int c = 0; c < elements.size; ++c) {
+        out << ' ';
+        write_number(out, ids[c] + 1);
+      }
+      out << '\n';
+    };
+    if(!mesh.cells.empty())
+      std::for_each(mesh.cells.begin(), mesh.cells.end(), write_element);
+    else
+      std::for_each(mesh.simplices.begin(), mesh.simplices.end(), write_element);
+  }
+  for(std::size_t i = 0; i < fixed.size(); ++i) {
+    out << "0 ";
+    write_number(out, i + 1);
+    out << " 15 1\n";
+    write_number(out, ++tag);
+    out << ' ';
+    write_number(out, fixed[i] + 1);
+    out << '\n';
+  }
+  out << "$EndElements\n";
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_GMSH_WRITING_H
