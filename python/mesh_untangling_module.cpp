@@ -358,7 +358,8 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                    const std::string& continuation, const py::handle& continuation_steps,
                    const py::handle& max_iterations, const py::handle& time_limit, const py::handle& threads,
                    const py::handle& progress, const py::handle& callback, bool refine,
-                   const py::handle& refine_budget, const std::string& seam_translations, const py::handle& out)
+                   const py::handle& refine_budget, bool optimize_quality, const std::string& seam_translations,
+                   const py::handle& out)
 {
   // Every parameter is read and checked here, before any work.
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
@@ -394,6 +395,9 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
   const int thread_count = threads.is_none() ? 0 : int(whole_number(threads, "threads"));
   options.phantoms = phantoms;
   options.refinement = refine;
+  options.optimize_quality = optimize_quality;
+  if(optimize_quality && mesh.has_corner_map())
+    throw py::value_error("optimize_quality=True is not offered for seamless maps");
   if(refine && (mesh.cell_size != 0 || mesh.has_corner_map()))
     throw py::value_error("refine=True splits the edges of simplices with one position per vertex: not " +
                           std::string(mesh.has_corner_map() ? "a seamless map" : element_kind(mesh)));
@@ -724,6 +728,10 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .MU_RESULT_FIELD(mean_volume_distortion, "mean volume distortion over positive elements")
     .MU_RESULT_FIELD(final_energy, "F(X, eps) at the last eps, normalized by the total target volume")
     .MU_RESULT_FIELD(final_epsilon, "the regularization eps of the last eps step")
+    .MU_RESULT_FIELD(min_quality_before_optimization,
+                     "optimize_quality=True: the worst element's quality of the untangled map (scaled Jacobian of "
+                     "cells, mean ratio of simplices); -1 when it did not run")
+    .MU_RESULT_FIELD(min_quality_after_optimization, "the same on the map returned (never lower); -1 when it did not run")
     .MU_RESULT_FIELD(continuation_steps, "steps of the continuation that ended locally invertible")
     .MU_RESULT_FIELD(continuation_motion, "fraction of the fixed vertices' motion its locally invertible steps reached")
     .MU_RESULT_FIELD(outer_iterations, "eps steps")
@@ -818,8 +826,8 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"), py::arg("targets"), py::arg("theta"),
         py::arg("solver"), py::arg("phantoms"), py::arg("continuation"), py::arg("continuation_steps"),
         py::arg("max_iterations"), py::arg("time_limit"), py::arg("threads"), py::arg("progress"),
-        py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("seam_translations"),
-        py::arg("out"));
+        py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("optimize_quality"),
+        py::arg("seam_translations"), py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));

@@ -56,7 +56,7 @@ struct Arguments
   std::string quads;            // the quad mesh of an integer-grid map (OBJ with seams)
   std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
   std::string weld = "auto";    // OBJ vertices at one point: auto, off or a distance
-  bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false;
+  bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false, optimize_quality = false;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
   std::size_t continuation_steps = MU::default_continuation_steps;
@@ -392,6 +392,12 @@ void print_welding(const Arguments& args, const Mesh_file& mesh)
     std::fprintf(stderr, "%s: note: %s\n", args.input.c_str(), mesh.welding_note.c_str());
 }
 
+/// A figure the library leaves at -1 when it was not measured: null in the report.
+nlohmann::ordered_json optional_figure(double figure)
+{
+  return figure < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(figure);
+}
+
 void write_report(std::ostream& out, const Arguments& args, const std::string& fixed_source,
                   const Mesh_file& mesh, const std::vector<bool>& is_fixed, const MU::Untangling_result& r,
                   const Run_record& run_record,
@@ -465,6 +471,9 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["input_returned"] = r.input_returned;
   j["refinement"] = args.refine;
   j["vertices_added"] = r.vertices_added;
+  j["optimize_quality"] = args.optimize_quality;
+  j["min_quality_before_optimization"] = optional_figure(r.min_quality_before_optimization);
+  j["min_quality_after_optimization"] = optional_figure(r.min_quality_after_optimization);
   nlohmann::ordered_json added = nlohmann::ordered_json::array();
   for(const MU::Added_vertex& a : run_record.added_vertices)
     added.push_back({{"vertex", a.vertex}, {"parents", {a.parents[0], a.parents[1]}}});
@@ -550,6 +559,7 @@ Run_options run_options(const Arguments& args, Progress_display* display)
   options.refinement = args.refine;
   options.regular_targets = args.targets == "regular";
   options.refinement_budget = args.refine_budget;
+  options.optimize_quality = args.optimize_quality;
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
     options.progress_fraction = [display](double f) { return display->fraction(f); };
@@ -707,6 +717,12 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.vertices_added);
     if(r.input_returned)
       std::fprintf(stderr, "the run ended with more defects than its input: the input map is written unchanged\n");
+    if(r.min_quality_before_optimization >= 0)
+      std::fprintf(stderr, "quality: the worst %s %.4g -> %.4g%s\n",
+                   mesh.cell_size != 0 ? "scaled Jacobian" : "mean ratio", r.min_quality_before_optimization,
+                   r.min_quality_after_optimization,
+                   r.min_quality_after_optimization > r.min_quality_before_optimization ? ""
+                     : " (no better map found: the untangled one is kept)");
     if(mesh.cell_size != 0)
       std::fprintf(stderr, "%s: inverted cells %zu -> %zu, min scaled Jacobian %.4g -> %.4g (vertex stars not "
                    "checked: the corner simplices of cells overlap)\n", element_kind(mesh),
@@ -800,6 +816,8 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   if(args.targets != "rest") throw Usage_error("--targets regular: a seamless parameterization's targets are its surface's triangles");
   if(args.init != "given") throw Usage_error("--init project: " + args.input + " has its map (vt with seams)");
   if(args.refine) throw Usage_error("--refine is not offered for seamless parameterizations (OBJ with seams)");
+  if(args.optimize_quality)
+    throw Usage_error("--optimize-quality is not offered for seamless parameterizations (OBJ with seams)");
   if(!args.phantoms.empty())
     throw Usage_error(args.phantoms + ": no phantom element protects a seamless parameterization (see the manual)");
   if(args.continuation == "always")
@@ -1040,6 +1058,10 @@ int main(int argc, char** argv)
                "output with the point fields parent_a and parent_b (-1 for the input's vertices)");
   app.add_option("--refine-budget", args.refine_budget, "largest number of vertices --refine may add (default 64)")
     ->check(whole_number_from_1)->needs(refine);
+  app.add_flag("--optimize-quality", args.optimize_quality, "when the map ends locally invertible, raise its worst "
+               "element's quality (the scaled Jacobian of quadrilaterals and hexahedra, the mean ratio of triangles "
+               "and tetrahedra) without leaving the locally invertible maps or moving a fixed vertex; the better "
+               "map is kept, and the summary and report give the figure before and after");
   app.add_option("--seams", args.seams, "an OBJ with seams (a seamless parameterization: one vt per wedge) keeps "
                  "the rotation of every seam transition, and its translation ('keep-translations', the default; cones "
                  "stay) or not ('free-translations')")

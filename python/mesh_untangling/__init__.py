@@ -31,8 +31,8 @@ __all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on
 
 def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=None, solver="auto", phantoms=True,
              continuation="auto", continuation_steps=None, max_iterations=None, time_limit=None, threads=None,
-             progress=None, callback=None, refine=False, refine_budget=None, kind=None, rest_elements=None,
-             seam_translations="keep", out=None):
+             progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False, kind=None,
+             rest_elements=None, seam_translations="keep", out=None):
     """Moves the free vertices of a mesh until it is locally invertible.
 
     Returns ``(new_vertices, result)``: the map as an array of the shape of
@@ -94,6 +94,12 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         ``result.added_parents`` describe the refined mesh.
     refine_budget : int >= 1, optional
         The largest number of vertices ``refine`` may add (default 64).
+    optimize_quality : bool
+        When the map ends locally invertible, raise its worst element's
+        quality (scaled Jacobian of cells, mean ratio of simplices) without
+        leaving the locally invertible maps or moving a fixed vertex; the
+        better map is returned, ``result.min_quality_before_optimization``
+        and ``result.min_quality_after_optimization`` give the figures.
     kind : None or "triangles", "tetrahedra", "quadrilaterals", "hexahedra"
         What ``elements`` are; default from their columns and the vertices'.
     rest_elements : array_like, m x 3 int, optional
@@ -124,7 +130,8 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
                            targets=targets, theta=theta, solver=solver, phantoms=phantoms, continuation=continuation,
                            continuation_steps=continuation_steps, max_iterations=max_iterations,
                            time_limit=time_limit, threads=threads, progress=progress, callback=callback,
-                           refine=refine, refine_budget=refine_budget, seam_translations=seam_translations, out=out)
+                           refine=refine, refine_budget=refine_budget, optimize_quality=optimize_quality,
+                           seam_translations=seam_translations, out=out)
 
 
 def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None):

@@ -62,6 +62,8 @@ class Result:
     input_returned: bool
     min_scaled_det_before: float
     min_scaled_det_after: float
+    min_quality_before_optimization: float
+    min_quality_after_optimization: float
     max_shape_distortion: float
     mean_shape_distortion: float
     max_volume_distortion: float
@@ -126,7 +128,7 @@ def untangle(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLi
              max_iterations: Optional[int] = None, time_limit: Optional[float] = None, threads: Optional[int] = None,
              progress: Optional[Callable[[float], Optional[bool]]] = None,
              callback: Optional[Callable[[Step], Optional[bool]]] = None, refine: bool = False,
-             refine_budget: Optional[int] = None, kind: Optional[Kind] = None,
+             refine_budget: Optional[int] = None, optimize_quality: bool = False, kind: Optional[Kind] = None,
              rest_elements: Optional[ArrayLike] = None, seam_translations: Literal["keep", "free"] = "keep",
              out: Optional[npt.NDArray[np.float64]] = None) -> Tuple[npt.NDArray[np.float64], Result]: ...
 def check_local_invertibility(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None,

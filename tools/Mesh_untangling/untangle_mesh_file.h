@@ -54,6 +54,9 @@ struct Run_options
   /// fixed connectivity leaves inverted elements (fixed boundary, rest given)
   bool refinement = false;
   std::size_t refinement_budget = CGAL::Mesh_untangling::default_refinement_budget;
+  /// Mesh_untangling::parameters::optimize_quality: from a locally invertible
+  /// result, raise the worst element's quality
+  bool optimize_quality = false;
   /// a per-corner map (seams): Mesh_untangling::parameters::seam_translations
   CGAL::Mesh_untangling::Seam_translations seam_translations = CGAL::Mesh_untangling::Seam_translations::KEEP;
 };

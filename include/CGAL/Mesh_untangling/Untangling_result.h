@@ -92,6 +92,15 @@ struct Untangling_result
   double final_energy = 0;             ///< F(X, ε) at the last ε, normalized by the total target volume
   double final_epsilon = 0;            ///< the regularization ε of the last ε step
 
+  /// With `parameters::optimize_quality`: the smallest quality of the
+  /// locally invertible map before the optimization and of the result (the
+  /// scaled Jacobian of quadrilaterals and hexahedra, the mean ratio of
+  /// triangles and tetrahedra; 1 at best).  The result is the optimized map
+  /// only when its figure is higher, so `after >= before`.  Both -1 when the
+  /// optimization did not run (not asked, or the run did not end locally invertible).
+  double min_quality_before_optimization = -1;
+  double min_quality_after_optimization = -1;
+
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)
   std::size_t continuation_steps = 0;

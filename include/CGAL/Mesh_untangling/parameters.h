@@ -32,6 +32,7 @@ enum mesh_untangling_element_figures_output_t { mesh_untangling_element_figures_
 enum mesh_untangling_progress_callback_t { mesh_untangling_progress_callback };
 enum mesh_untangling_refinement_t { mesh_untangling_refinement };
 enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
+enum mesh_untangling_optimize_quality_t { mesh_untangling_optimize_quality };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
@@ -221,6 +222,20 @@ CGAL_MESH_UNTANGLING_PARAMETER(progress_callback, mesh_untangling_progress_callb
 /// the connectivity is kept).  Offered by `CGAL::untangle_simplex_soup`,
 /// whose point and simplex ranges then grow (see there).
 CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `bool`: when the run ends locally invertible, improve its worst elements
+/// without leaving the locally invertible maps and with the same fixed
+/// vertices (default `false`).  The map is moved toward the ideal shape of
+/// every element (a regular simplex, or for a cell's corner the corner of a
+/// square or cube), each at its own size, every element counting the same;
+/// the barrier of the energy keeps every element positive on the way, and
+/// the exact verdict is taken again at the end.  The map whose smallest
+/// quality is higher is kept: the scaled Jacobian for quadrilaterals and
+/// hexahedra, the mean ratio for triangles and tetrahedra
+/// (`Untangling_result::min_quality_before_optimization` and
+/// `min_quality_after_optimization`).  Not for seamless maps, nor with
+/// phantom elements given by the caller: the map is then as untangled.
+CGAL_MESH_UNTANGLING_PARAMETER(optimize_quality, mesh_untangling_optimize_quality_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// A `CGAL::Mesh_untangling::Seam_translations`: whether the translations
 /// across seams are kept (default) or free, for the seamless overload of

@@ -346,6 +346,25 @@ class Kinds(unittest.TestCase):
         self.assertTrue(np.array_equal(refined[fixed], vertices[fixed]))
         self.assertTrue(mu.check_local_invertibility(refined, result.elements, rest=result.rest))
 
+    def test_optimize_quality_raises_the_worst_element(self):
+        # a valid grid of triangles whose interior vertices moved at random, its
+        # own rest: untangling keeps it, the quality rung improves its worst triangle
+        n = 8
+        x, y = np.meshgrid(np.linspace(0, 1, n + 1), np.linspace(0, 1, n + 1))
+        vertices = np.column_stack([x.ravel(), y.ravel()])
+        interior = (vertices > 0).all(axis=1) & (vertices < 1).all(axis=1)
+        vertices[interior] += np.random.default_rng(7).uniform(-0.3 / n, 0.3 / n, (interior.sum(), 2))
+        ids = np.arange((n + 1) ** 2).reshape(n + 1, n + 1)
+        a, b, c, d = ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(), ids[1:, :-1].ravel()
+        triangles = np.vstack([np.column_stack([a, b, c]), np.column_stack([a, c, d])])
+        plain, untangled = mu.untangle(vertices, triangles, rest=vertices, fixed="boundary")
+        self.assertEqual(untangled.min_quality_before_optimization, -1)
+        better, result = mu.untangle(vertices, triangles, rest=vertices, fixed="boundary", optimize_quality=True)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertGreater(result.min_quality_after_optimization, result.min_quality_before_optimization + 0.05)
+        self.assertTrue(np.array_equal(better[~interior], vertices[~interior]))
+        self.assertTrue(mu.check_local_invertibility(better, triangles, rest=vertices))
+
 
 class Files(unittest.TestCase):
     def setUp(self):

@@ -52,6 +52,8 @@ struct Untangling_options
   // elements (refinement/local_refinement.h), and its budget of new vertices.
   bool refinement = false;
   std::size_t refinement_budget = default_refinement_budget;
+  // The quality rung after a locally invertible result (driver/quality_rung.h).
+  bool optimize_quality = false;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };

@@ -189,7 +189,7 @@ Repair_at_stall<d> local_repair_at_stall(const Untangling_options& options)
   };
 }
 
-/// Describes in `r` the map `in` (after a repair).
+/// Describes in `r` the map `in` (after a repair, or the quality rung).
 template <int d>
 void describe_repaired_map(const Untangling_input<d>& in, const Untangling_options& options, Untangling_result& r)
 {

@@ -60,6 +60,7 @@ Untangling_options read_options(const NamedParameters& np)
   o.refinement = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement), false);
   o.refinement_budget = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement_budget),
                                          Mesh_untangling::default_refinement_budget);
+  o.optimize_quality = choose_parameter(get_parameter(np, internal_np::mesh_untangling_optimize_quality), false);
   if(o.refinement_budget == 0)
     o.invalid_parameter = "refinement_budget must be at least 1 vertex, not 0";
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())

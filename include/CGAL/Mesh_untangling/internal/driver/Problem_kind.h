@@ -125,6 +125,15 @@ public:
     return options.refinement && !phantoms_supplied_ && targets_given_ && !free_boundary_;
   }
 
+  /// Whether `options` ask for the quality rung (quality_rung.h) and it
+  /// applies: not to a seamless map (its targets are its surface's, which
+  /// the map must keep), nor with supplied phantoms (sized against the
+  /// targets the rung replaces).
+  bool quality_rung_applies(const Untangling_options& options) const
+  {
+    return options.optimize_quality && !seamless_ && !phantoms_supplied_;
+  }
+
 private:
   bool cells_, seamless_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
   Protection_request<d> no_protection_;

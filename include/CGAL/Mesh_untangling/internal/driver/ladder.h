@@ -14,7 +14,9 @@
 //      in 2D with nothing fixed, the convex start (convex_start.h);
 //   2. the local repair of the few elements left inverted (local_repair.h);
 //   3. on request, local refinement, whose refined problems climb rungs 1
-//      and 2 again (refinement/local_refinement.h).
+//      and 2 again (refinement/local_refinement.h);
+//   4. on request, from a locally invertible map, the quality rung
+//      (driver/quality_rung.h).
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_LADDER_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_LADDER_H
 
@@ -24,6 +26,7 @@
 #include <CGAL/Mesh_untangling/internal/driver/Run.h>
 #include <CGAL/Mesh_untangling/internal/driver/carried_start.h>
 #include <CGAL/Mesh_untangling/internal/driver/convex_start.h>
+#include <CGAL/Mesh_untangling/internal/driver/quality_rung.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
@@ -110,6 +113,7 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
   if(!progress.cancelled() && kind.refinement_applies(options)) {
     const auto rerun = [&](Untangling_input<d>& refined, Untangling_options o) {
       o.refinement = false;   // (the refined problem climbs rungs 1 and 2; it is of the same kind)
+      o.optimize_quality = false;
       std::vector<Eigen::Matrix<double, d, 1>> start = refined.positions;
       return climb_the_ladder<d>(refined, start, o, kind, protection, progress, nullptr, nullptr);
     };
@@ -117,6 +121,7 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
     refine_until_locally_invertible<d>(in, given, options, r, new_vertices, rerun);
     if(added) *added = std::move(new_vertices);
   }
+  if(!progress.cancelled() && kind.quality_rung_applies(options)) optimize_quality<d>(in, options, protection, r, phantoms_used);
   return std::move(r);
 }
 

@@ -1,0 +1,226 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The quality rung (parameters::optimize_quality): from a locally
+// invertible map, the same eps loop toward the ideal shape of every element
+// at its own size.  Untangling asks for positive elements near the given
+// targets; a mesher asks for the best worst element, and rest shapes, when
+// given, are often what made the elements bad.  The barrier of the energy
+// and the step bound keep every element positive on the way; the exact
+// verdict decides again at the end, and the map with the better worst
+// element is kept, so the figure never goes down.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_QUALITY_RUNG_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_QUALITY_RUNG_H
+
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/local_repair.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/boundary_protection.h>
+#include <CGAL/Mesh_untangling/internal/staged_untangling.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// The quality of mesh element k of `in`, oriented as `orientation` (+1 or
+/// -1): a corner of a cell its scaled Jacobian (the determinant of the unit
+/// vectors along its d edges, as Mesh_untangling::scaled_jacobian() takes
+/// it per corner), a simplex its mean ratio; 1 at best, not positive for an
+/// inverted or flat element.
+template <int d>
+double element_quality(const Untangling_input<d>& in, std::size_t k, int orientation)
+{
+  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+  for(int i = 0; i <= d; ++i) s[i] = in.positions[in.elements[k][i]];
+  const double volume = orientation * simplex_volume<d>(s);
+  if(!(volume > 0)) return volume < 0 ? -1. : 0.;
+  if(!in.has_cells()) return mean_ratio<d>(s);
+  Eigen::Matrix<double, d, d> unit_edges;
+  for(int i = 0; i < d; ++i) {
+    const Eigen::Matrix<double, d, 1> e = s[i + 1] - s[0];
+    if(!(e.norm() > 0)) return 0.;
+    unit_edges.col(i) = e / e.norm();
+  }
+  return orientation * unit_edges.determinant();
+}
+
+/// The shape distortion of mesh element k of `in` against its ideal shape
+/// (ideal_shape()): tr(JᵀJ)/d / det(J)^(2/d), 1 at best, infinite for a
+/// flat or inverted element.
+template <int d>
+double ideal_shape_distortion(const Untangling_input<d>& in, std::size_t k, int orientation)
+{
+  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+  for(int i = 0; i <= d; ++i) s[i] = in.positions[in.elements[k][i]];
+  if(!in.has_cells()) {
+    const double q = orientation * simplex_volume<d>(s) > 0 ? mean_ratio<d>(s) : 0.;
+    return q > 0 ? 1 / q : std::numeric_limits<double>::infinity();
+  }
+  Eigen::Matrix<double, d, d> E;
+  for(int i = 0; i < d; ++i) E.col(i) = s[i + 1] - s[0];
+  const double det = orientation * E.determinant();
+  return det > 0 ? E.squaredNorm() / d / std::pow(det, 2. / d) : std::numeric_limits<double>::infinity();
+}
+
+/// The smallest element_quality() over the mesh elements of `in`.
+template <int d>
+double min_quality(const Untangling_input<d>& in, const std::vector<int>& orientation)
+{
+  double smallest = 1;
+  for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k)
+    smallest = (std::min)(smallest, element_quality<d>(in, k, orientation[k]));
+  return smallest;
+}
+
+/// The ideal shape of an element, of unit volume and positive: a regular
+/// simplex, or for the corner of a cell the corner of the unit square or
+/// cube (a cell is best when each corner is a right one).
+template <int d>
+std::array<Eigen::Matrix<double, d, 1>, d + 1> ideal_shape(bool cell_corner)
+{
+  if(!cell_corner) return regular_simplex<d>();
+  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+  s[0].setZero();
+  for(int i = 0; i < d; ++i) s[i + 1] = Eigen::Matrix<double, d, 1>::Unit(i);
+  const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
+  for(auto& p : s) p *= factor;
+  return s;
+}
+
+/// Rounds of the quality rung at most, and how many in a row may fail to
+/// raise the worst element before it stops.  Each round is one eps loop
+/// from a valid map (two eps steps on the hexahedral meshes below).
+constexpr int quality_rounds = 8;
+constexpr int quality_rounds_without_gain = 2;
+
+/// The weights that make the worst elements count (emphasize_worst()): each
+/// round multiplies an element's by its shape distortion to this power,
+/// the weights kept within this factor of their mean either way.  On five
+/// hexahedral meshes of published pipelines with their boundary fixed
+/// (benchmark/Mesh_untangling/README.md, "quality"), equal weights raised
+/// the worst scaled Jacobian less; the distortion of the last map alone
+/// (no memory) made the worst element move from place to place; a power of
+/// 4, or no bound, made the solves slow and the worst element worse.
+constexpr double quality_emphasis = 2;
+constexpr double quality_weight_spread = 1e2;
+
+/// Multiplies the weight of every mesh element of `in` by its
+/// ideal_shape_distortion() to the power quality_emphasis, and brings the
+/// weights back to a mean of 1 within quality_weight_spread.
+template <int d>
+void emphasize_worst(const Untangling_input<d>& in, const std::vector<int>& orientation, std::vector<double>& weights)
+{
+  const std::size_t m = in.number_of_mesh_elements();
+  weights.resize(m, 1.);
+  double sum = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    const double distortion = (std::min)(ideal_shape_distortion<d>(in, k, orientation[k]), quality_weight_spread);
+    sum += weights[k] *= std::pow(distortion, quality_emphasis);
+  }
+  for(double& w : weights)
+    w = std::clamp(w * double(m) / sum, 1 / quality_weight_spread, quality_weight_spread);
+}
+
+/// `in` with the ideal shape of every mesh element as its target, at the
+/// element's size in the map and with its reference orientation (mirrored,
+/// so that a cell's corner stays a right corner).  Element k weighs
+/// `weights[k]` times the mean volume (1 when `weights` is empty): the
+/// worst element counts where it is small too, and phantoms (weighing their
+/// volume) as much as in the run.
+template <int d>
+Untangling_input<d> with_ideal_targets(const Untangling_input<d>& in, const std::vector<int>& orientation,
+                                       const std::vector<double>& weights)
+{
+  const std::size_t m = in.number_of_mesh_elements();
+  Untangling_input<d> ideal;
+  ideal.positions = in.positions;
+  ideal.elements.assign(in.elements.begin(), in.elements.begin() + std::ptrdiff_t(m));
+  ideal.is_fixed = in.is_fixed;
+  ideal.corners_per_cell = in.corners_per_cell;
+  ideal.links = in.links;
+  const auto shape = ideal_shape<d>(in.has_cells());
+  ideal.targets.resize(m);
+  double total_volume = 0;
+  for(std::size_t k = 0; k < m; ++k) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+    for(int i = 0; i <= d; ++i) s[i] = in.positions[in.elements[k][i]];
+    const double volume = std::abs(simplex_volume<d>(s));
+    total_volume += volume;
+    const double size = volume > 0 ? std::pow(volume, 1. / d) : 1.;
+    for(int i = 0; i <= d; ++i) {
+      ideal.targets[k][i] = size * shape[i];
+      if(orientation[k] < 0) ideal.targets[k][i][d - 1] = -ideal.targets[k][i][d - 1];
+    }
+  }
+  const double mean_volume = m > 0 ? total_volume / double(m) : 1.;
+  ideal.weights.resize(m);
+  for(std::size_t k = 0; k < m; ++k) ideal.weights[k] = (weights.empty() ? 1. : weights[k]) * mean_volume;
+  return ideal;
+}
+
+/// After a run `r` that ended locally invertible on `in`: the quality rung
+/// (see the file's comment) within what is left of `options`' budget,
+/// with the run's protection of a free boundary.  The first round weighs
+/// every element the same; each further one emphasizes the elements still
+/// bad (emphasize_worst()), and one that does not raise the worst element
+/// goes back to the best map so far with the square roots of the weights.
+/// The best map replaces `in` when it is better than `in`, and `r`
+/// describes it (`phantoms_used`, when given, receives its phantoms); `r`
+/// records the figure before and after.
+template <int d>
+void optimize_quality(Untangling_input<d>& in, const Untangling_options& options,
+                      const Protection_request<d>& protection, Untangling_result& r,
+                      Phantom_elements<d>* phantoms_used)
+{
+  if(r.status != Untangling_status::SUCCESS) return;
+  const std::vector<int> orientation = target_orientations<d>(in);
+  double best = min_quality<d>(in, orientation);
+  r.min_quality_before_optimization = best;
+  Untangling_input<d> current = in;
+  std::vector<double> weights;
+  std::optional<Phantom_elements<d>> best_phantoms;
+  for(int round = 0, without_gain = 0;
+      round < quality_rounds && without_gain < quality_rounds_without_gain && !out_of_time(options); ++round) {
+    if(round > 0) emphasize_worst<d>(current, orientation, weights);
+    Untangling_input<d> ideal = with_ideal_targets<d>(current, orientation, weights);
+    Untangling_options o = options;
+    o.max_outer_iterations -= std::min(o.max_outer_iterations, r.outer_iterations);
+    o.scaling = Target_scaling::AS_GIVEN;   // (the targets are the elements' own sizes)
+    Phantom_elements<d> phantoms;
+    const Untangling_result polished = untangle_directly<d>(ideal, o, protection, &phantoms);
+    add_counts(r, polished);
+    if(polished.status != Untangling_status::SUCCESS) break;
+    const double quality = min_quality<d>(ideal, orientation);
+    if(!(quality > best)) {
+      ++without_gain;   // (`current` is still the best map)
+      for(double& w : weights) w = std::sqrt(w);
+      continue;
+    }
+    without_gain = 0;
+    best = quality;
+    current.positions = std::move(ideal.positions);
+    best_phantoms = std::move(phantoms);
+  }
+  r.min_quality_after_optimization = best;
+  if(!best_phantoms) return;
+  in.positions = current.positions;
+  if(phantoms_used) *phantoms_used = std::move(*best_phantoms);
+  describe_repaired_map<d>(in, options, r);
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_QUALITY_RUNG_H
