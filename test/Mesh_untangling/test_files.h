@@ -1,8 +1,9 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// What the file tests (test_io, test_file_safety) share: a failure counted
-// with the caller's line, and a fresh folder for the files they write.
+// What the file tests (test_io, test_gmsh, test_file_safety) share: a
+// failure counted with the caller's line, a fresh folder for the files they
+// write, and the check of a reader's error.
 #ifndef MESH_UNTANGLING_TEST_FILES_H
 #define MESH_UNTANGLING_TEST_FILES_H
 
@@ -49,6 +50,27 @@ inline std::string read_text(const std::string& path)
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// `read(path)` must throw a `Read_error` whose text starts with `path:line: `
+/// (`path: ` for line 0) and holds `phrase`; a failure is counted at `file`:`caller`.
+template <class Read_error, class Read>
+void check_read_error(const char* file, int caller, const Read& read, const std::string& path, std::size_t line,
+                      const std::string& phrase)
+{
+  try {
+    read(path);
+    report_failure(file, caller, "no Read_error for " + path);
+  } catch(const Read_error& e) {
+    const std::string what = e.what();
+    const std::string where = line == 0 ? path + ": " : path + ":" + std::to_string(line) + ": ";
+    if(e.line() != line || e.file() != path || what.compare(0, where.size(), where) != 0
+       || what.find(phrase) == std::string::npos)
+      report_failure(file, caller,
+                     "got \"" + what + "\", expected line " + std::to_string(line) + " and '" + phrase + "'");
+  } catch(const std::exception& e) {
+    report_failure(file, caller, std::string("wrong exception type: ") + e.what());
+  }
 }
 
 } // namespace test

@@ -180,19 +180,7 @@ typedef std::function<void(const std::string&)> Reader;
 void check_read_error(int caller, const Reader& read, const std::string& name, const std::string& content,
                       std::size_t line, const std::string& phrase)
 {
-  const std::string path = write_text(name, content);
-  try {
-    read(path);
-    report_failure(caller, "no Read_error for " + name);
-  } catch(const Read_error& e) {
-    const std::string what = e.what();
-    const std::string where = line == 0 ? path + ": " : path + ":" + std::to_string(line) + ": ";
-    if(e.line() != line || e.file() != path || what.compare(0, where.size(), where) != 0
-       || what.find(phrase) == std::string::npos)
-      report_failure(caller, "got \"" + what + "\", expected line " + std::to_string(line) + " and '" + phrase + "'");
-  } catch(const std::exception& e) {
-    report_failure(caller, std::string("wrong exception type: ") + e.what());
-  }
+  test::check_read_error<Read_error>(__FILE__, caller, read, write_text(name, content), line, phrase);
 }
 
 void check_write_error(int caller, const std::function<void()>& write, const std::string& phrase)
