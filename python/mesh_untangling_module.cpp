@@ -358,8 +358,8 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                    const std::string& continuation, const py::handle& continuation_steps,
                    const py::handle& max_iterations, const py::handle& time_limit, const py::handle& threads,
                    const py::handle& progress, const py::handle& callback, bool refine,
-                   const py::handle& refine_budget, bool optimize_quality, const std::string& seam_translations,
-                   const py::handle& out)
+                   const py::handle& refine_budget, bool optimize_quality, bool slide_boundary, double feature_angle,
+                   const std::string& seam_translations, const py::handle& out)
 {
   // Every parameter is read and checked here, before any work.
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
@@ -398,6 +398,12 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
   options.optimize_quality = optimize_quality;
   if(optimize_quality && mesh.has_corner_map())
     throw py::value_error("optimize_quality=True is not offered for seamless maps");
+  options.sliding_boundary = slide_boundary;
+  options.feature_angle = feature_angle;
+  if(!(feature_angle > 0 && feature_angle <= 90))
+    throw py::value_error("feature_angle must be in (0, 90] degrees, not " + std::to_string(feature_angle));
+  if(slide_boundary && mesh.has_corner_map())
+    throw py::value_error("slide_boundary=True is not offered for seamless maps");
   if(refine && (mesh.cell_size != 0 || mesh.has_corner_map()))
     throw py::value_error("refine=True splits the edges of simplices with one position per vertex: not " +
                           std::string(mesh.has_corner_map() ? "a seamless map" : element_kind(mesh)));
@@ -732,6 +738,12 @@ PYBIND11_MODULE(_mesh_untangling, m)
                      "optimize_quality=True: the worst element's quality of the untangled map (scaled Jacobian of "
                      "cells, mean ratio of simplices); -1 when it did not run")
     .MU_RESULT_FIELD(min_quality_after_optimization, "the same on the map returned (never lower); -1 when it did not run")
+    .MU_RESULT_FIELD(vertices_sliding_on_surfaces, "slide_boundary=True: boundary vertices that slid on a surface patch")
+    .MU_RESULT_FIELD(vertices_sliding_on_curves, "slide_boundary=True: boundary vertices that slid on a feature curve")
+    .MU_RESULT_FIELD(corner_vertices_held, "slide_boundary=True: corners held where feature curves meet or end")
+    .MU_RESULT_FIELD(sliding_rounds, "slide_boundary=True: rounds of untangling and projection")
+    .MU_RESULT_FIELD(max_distance_to_target,
+                     "slide_boundary=True: the largest distance of a sliding vertex from its target; -1 otherwise")
     .MU_RESULT_FIELD(continuation_steps, "steps of the continuation that ended locally invertible")
     .MU_RESULT_FIELD(continuation_motion, "fraction of the fixed vertices' motion its locally invertible steps reached")
     .MU_RESULT_FIELD(outer_iterations, "eps steps")
@@ -827,7 +839,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("solver"), py::arg("phantoms"), py::arg("continuation"), py::arg("continuation_steps"),
         py::arg("max_iterations"), py::arg("time_limit"), py::arg("threads"), py::arg("progress"),
         py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("optimize_quality"),
-        py::arg("seam_translations"), py::arg("out"));
+        py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("seam_translations"), py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));

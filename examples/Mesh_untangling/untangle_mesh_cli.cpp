@@ -57,6 +57,8 @@ struct Arguments
   std::string seams = "keep-translations";   // a per-corner map (OBJ with seams)
   std::string weld = "auto";    // OBJ vertices at one point: auto, off or a distance
   bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false, optimize_quality = false;
+  bool slide_boundary = false;
+  double feature_angle = 35;
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
   std::size_t continuation_steps = MU::default_continuation_steps;
@@ -345,6 +347,18 @@ struct Checks
 /// over-wound stars with their winding and whether their vertex is fixed,
 /// over-wound edge fans, and the phantoms left non-positive.  Empty lists
 /// when the map is locally invertible.
+/// The bounding box diagonal of the mesh's map (the size a sliding boundary's distances are told against).
+double map_diagonal(const Mesh_file& mesh)
+{
+  std::array<double, 3> lo{}, hi{};
+  for(std::size_t v = 0; v < mesh.map.size(); ++v)
+    for(int c = 0; c < 3; ++c) {
+      lo[c] = v == 0 ? mesh.map[v][c] : std::min(lo[c], mesh.map[v][c]);
+      hi[c] = v == 0 ? mesh.map[v][c] : std::max(hi[c], mesh.map[v][c]);
+    }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
 nlohmann::ordered_json blocking_defects(const Mesh_file& mesh, const std::vector<bool>& is_fixed,
                                         const Run_record& run_record, const Verdict& v,
                                         const std::vector<std::size_t>& phantoms_not_positive)
@@ -474,6 +488,13 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["optimize_quality"] = args.optimize_quality;
   j["min_quality_before_optimization"] = optional_figure(r.min_quality_before_optimization);
   j["min_quality_after_optimization"] = optional_figure(r.min_quality_after_optimization);
+  j["sliding_boundary"] = args.slide_boundary;
+  j["feature_angle"] = args.feature_angle;
+  j["vertices_sliding_on_surfaces"] = r.vertices_sliding_on_surfaces;
+  j["vertices_sliding_on_curves"] = r.vertices_sliding_on_curves;
+  j["corner_vertices_held"] = r.corner_vertices_held;
+  j["sliding_rounds"] = r.sliding_rounds;
+  j["max_distance_to_target"] = optional_figure(r.max_distance_to_target);
   nlohmann::ordered_json added = nlohmann::ordered_json::array();
   for(const MU::Added_vertex& a : run_record.added_vertices)
     added.push_back({{"vertex", a.vertex}, {"parents", {a.parents[0], a.parents[1]}}});
@@ -560,6 +581,8 @@ Run_options run_options(const Arguments& args, Progress_display* display)
   options.regular_targets = args.targets == "regular";
   options.refinement_budget = args.refine_budget;
   options.optimize_quality = args.optimize_quality;
+  options.sliding_boundary = args.slide_boundary;
+  options.feature_angle = args.feature_angle;
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
     options.progress_fraction = [display](double f) { return display->fraction(f); };
@@ -723,6 +746,12 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.min_quality_after_optimization,
                    r.min_quality_after_optimization > r.min_quality_before_optimization ? ""
                      : " (no better map found: the untangled one is kept)");
+    if(r.max_distance_to_target >= 0)
+      std::fprintf(stderr, "sliding boundary: %zu vertices on surface patches, %zu on feature curves, %zu corners "
+                   "held; the farthest ends %.3g from its target (%.3g of the boundary's size), %zu round%s\n",
+                   r.vertices_sliding_on_surfaces, r.vertices_sliding_on_curves, r.corner_vertices_held,
+                   r.max_distance_to_target, r.max_distance_to_target / std::max(1e-300, map_diagonal(mesh)),
+                   r.sliding_rounds, r.sliding_rounds == 1 ? "" : "s");
     if(mesh.cell_size != 0)
       std::fprintf(stderr, "%s: inverted cells %zu -> %zu, min scaled Jacobian %.4g -> %.4g (vertex stars not "
                    "checked: the corner simplices of cells overlap)\n", element_kind(mesh),
@@ -818,6 +847,8 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   if(args.refine) throw Usage_error("--refine is not offered for seamless parameterizations (OBJ with seams)");
   if(args.optimize_quality)
     throw Usage_error("--optimize-quality is not offered for seamless parameterizations (OBJ with seams)");
+  if(args.slide_boundary)
+    throw Usage_error("--slide-boundary is not offered for seamless parameterizations (OBJ with seams)");
   if(!args.phantoms.empty())
     throw Usage_error(args.phantoms + ": no phantom element protects a seamless parameterization (see the manual)");
   if(args.continuation == "always")
@@ -1025,7 +1056,15 @@ int main(int argc, char** argv)
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
   auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based; empty: none); default: "
                                "the handles of an .input file, the 'fixed' point scalar of a .vtk file");
-  app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
+  auto* fix_boundary = app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
+  auto* slide = app.add_flag("--slide-boundary", args.slide_boundary, "the boundary vertices slide on the input's "
+               "boundary as given: on their surface patch, or on their feature curve (an edge whose facets' planes meet "
+               "beyond --feature-angle), corners where curves meet or end and --fixed vertices staying; in 2D along "
+               "the boundary polyline. Every sliding vertex ends on its target (the summary and report give the "
+               "largest distance)")->excludes(fix_boundary);
+  app.add_option("--feature-angle", args.feature_angle, "with --slide-boundary: the angle in degrees, in (0, 90], "
+                 "between two boundary facets' planes beyond which their edge is a feature (default 35)")
+    ->check(CLI::Range(1e-9, 90.0))->needs(slide);
   app.add_option("-o,--output", args.output, "result (format by extension; .vtk adds per-cell det J, distortions and "
                  "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");
   app.add_option("--report", args.report, "JSON report with every figure");

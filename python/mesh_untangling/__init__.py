@@ -31,8 +31,9 @@ __all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on
 
 def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=None, solver="auto", phantoms=True,
              continuation="auto", continuation_steps=None, max_iterations=None, time_limit=None, threads=None,
-             progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False, kind=None,
-             rest_elements=None, seam_translations="keep", out=None):
+             progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False,
+             slide_boundary=False, feature_angle=35.0, kind=None, rest_elements=None, seam_translations="keep",
+             out=None):
     """Moves the free vertices of a mesh until it is locally invertible.
 
     Returns ``(new_vertices, result)``: the map as an array of the shape of
@@ -100,6 +101,14 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         leaving the locally invertible maps or moving a fixed vertex; the
         better map is returned, ``result.min_quality_before_optimization``
         and ``result.min_quality_after_optimization`` give the figures.
+    slide_boundary : bool
+        The boundary vertices that are not fixed slide on the boundary as
+        given: on their surface patch, or on their feature curve (an edge
+        whose facets' planes meet beyond ``feature_angle``); corners where
+        curves meet or end stay.  In 2D along the boundary polyline.  Every
+        sliding vertex ends on its target: ``result.max_distance_to_target``.
+    feature_angle : float in (0, 90]
+        Degrees, with ``slide_boundary`` (default 35).
     kind : None or "triangles", "tetrahedra", "quadrilaterals", "hexahedra"
         What ``elements`` are; default from their columns and the vertices'.
     rest_elements : array_like, m x 3 int, optional
@@ -131,6 +140,7 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
                            continuation_steps=continuation_steps, max_iterations=max_iterations,
                            time_limit=time_limit, threads=threads, progress=progress, callback=callback,
                            refine=refine, refine_budget=refine_budget, optimize_quality=optimize_quality,
+                           slide_boundary=slide_boundary, feature_angle=feature_angle,
                            seam_translations=seam_translations, out=out)
 
 

@@ -64,6 +64,11 @@ class Result:
     min_scaled_det_after: float
     min_quality_before_optimization: float
     min_quality_after_optimization: float
+    vertices_sliding_on_surfaces: int
+    vertices_sliding_on_curves: int
+    corner_vertices_held: int
+    sliding_rounds: int
+    max_distance_to_target: float
     max_shape_distortion: float
     mean_shape_distortion: float
     max_volume_distortion: float
@@ -128,7 +133,8 @@ def untangle(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLi
              max_iterations: Optional[int] = None, time_limit: Optional[float] = None, threads: Optional[int] = None,
              progress: Optional[Callable[[float], Optional[bool]]] = None,
              callback: Optional[Callable[[Step], Optional[bool]]] = None, refine: bool = False,
-             refine_budget: Optional[int] = None, optimize_quality: bool = False, kind: Optional[Kind] = None,
+             refine_budget: Optional[int] = None, optimize_quality: bool = False, slide_boundary: bool = False,
+             feature_angle: float = 35.0, kind: Optional[Kind] = None,
              rest_elements: Optional[ArrayLike] = None, seam_translations: Literal["keep", "free"] = "keep",
              out: Optional[npt.NDArray[np.float64]] = None) -> Tuple[npt.NDArray[np.float64], Result]: ...
 def check_local_invertibility(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None,

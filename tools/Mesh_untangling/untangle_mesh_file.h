@@ -57,6 +57,10 @@ struct Run_options
   /// Mesh_untangling::parameters::optimize_quality: from a locally invertible
   /// result, raise the worst element's quality
   bool optimize_quality = false;
+  /// Mesh_untangling::parameters::sliding_boundary and feature_angle: the
+  /// boundary slides on the input's own surface patches and feature curves
+  bool sliding_boundary = false;
+  double feature_angle = 35;
   /// a per-corner map (seams): Mesh_untangling::parameters::seam_translations
   CGAL::Mesh_untangling::Seam_translations seam_translations = CGAL::Mesh_untangling::Seam_translations::KEEP;
 };

@@ -101,6 +101,17 @@ struct Untangling_result
   double min_quality_before_optimization = -1;
   double min_quality_after_optimization = -1;
 
+  /// With `parameters::sliding_boundary`: the boundary vertices that slid
+  /// on a surface patch and on a feature curve, those held where curves
+  /// meet or end (corners), the rounds of untangling and projection, and
+  /// the largest distance of a sliding vertex from its target at the end
+  /// (-1 without a sliding boundary).
+  std::size_t vertices_sliding_on_surfaces = 0;
+  std::size_t vertices_sliding_on_curves = 0;
+  std::size_t corner_vertices_held = 0;
+  std::size_t sliding_rounds = 0;
+  double max_distance_to_target = -1;
+
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)
   std::size_t continuation_steps = 0;

@@ -33,6 +33,8 @@ enum mesh_untangling_progress_callback_t { mesh_untangling_progress_callback };
 enum mesh_untangling_refinement_t { mesh_untangling_refinement };
 enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
 enum mesh_untangling_optimize_quality_t { mesh_untangling_optimize_quality };
+enum mesh_untangling_sliding_boundary_t { mesh_untangling_sliding_boundary };
+enum mesh_untangling_feature_angle_t { mesh_untangling_feature_angle };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
@@ -236,6 +238,28 @@ CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
 /// `min_quality_after_optimization`).  Not for seamless maps, nor with
 /// phantom elements given by the caller: the map is then as untangled.
 CGAL_MESH_UNTANGLING_PARAMETER(optimize_quality, mesh_untangling_optimize_quality_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `bool`: the boundary vertices that are not fixed slide on the boundary
+/// of the input as given (default `false`: they are free).  A boundary
+/// edge whose two facets' planes meet at more than `feature_angle` is a
+/// feature edge; a vertex on two feature edges that continue each other
+/// slides on their curve, one on no feature edge on its surface patch (the
+/// facets it reaches without crossing a feature edge), and any other, where
+/// curves meet or end, stays where it is.  Each vertex stays on its target
+/// in the result (it moves in its tangent plane or line, and is projected
+/// back onto the target between runs until a projection moves nothing
+/// farther than 1e-9 of the boundary's bounding box diagonal);
+/// `Untangling_result::max_distance_to_target` says how far the farthest
+/// ended.  In 2D the boundary slides on its polyline, corners beyond the
+/// feature angle staying.  Not for seamless maps, nor with refinement or
+/// phantom elements given by the caller.
+CGAL_MESH_UNTANGLING_PARAMETER(sliding_boundary, mesh_untangling_sliding_boundary_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// `double`, in degrees, in (0, 90]: the angle between two boundary facets'
+/// planes beyond which their edge is a feature of the sliding boundary
+/// (default 35).  The planes' angle, not the normals': a facet folded over
+/// in the tangled input (its normal reversed) makes no feature.
+CGAL_MESH_UNTANGLING_PARAMETER(feature_angle, mesh_untangling_feature_angle_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// A `CGAL::Mesh_untangling::Seam_translations`: whether the translations
 /// across seams are kept (default) or free, for the seamless overload of

@@ -365,6 +365,35 @@ class Kinds(unittest.TestCase):
         self.assertTrue(np.array_equal(better[~interior], vertices[~interior]))
         self.assertTrue(mu.check_local_invertibility(better, triangles, rest=vertices))
 
+    def test_slide_boundary_keeps_the_square(self):
+        # a grid of triangles whose boundary vertices moved along the sides far
+        # enough to fold boundary triangles over: fixed, it cannot be untangled;
+        # sliding, it is, every side vertex still on its side, the corners held
+        n = 6
+        x, y = np.meshgrid(np.linspace(0, 1, n + 1), np.linspace(0, 1, n + 1))
+        rest = np.column_stack([x.ravel(), y.ravel()])
+        vertices = rest.copy()
+        on_side = (rest == 0) | (rest == 1)
+        corner = on_side.all(axis=1)
+        along = np.where(on_side[:, 0], 1, 0)   # a side x = 0 or 1 slides along y, and the other way
+        sides = on_side.any(axis=1) & ~corner
+        shift = np.random.default_rng(3).choice([-0.9 / n, 0.9 / n], sides.sum())
+        vertices[sides, along[sides]] = np.clip(vertices[sides, along[sides]] + shift, 0.1 / n, 1 - 0.1 / n)
+        ids = np.arange((n + 1) ** 2).reshape(n + 1, n + 1)
+        a, b, c, d = ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(), ids[1:, :-1].ravel()
+        triangles = np.vstack([np.column_stack([a, b, c]), np.column_stack([a, c, d])])
+        _, fixed = mu.untangle(vertices, triangles, rest=rest, fixed="boundary", time_limit=10)
+        self.assertFalse(fixed.is_locally_invertible)
+        slid, result = mu.untangle(vertices, triangles, rest=rest, slide_boundary=True)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertEqual((result.vertices_sliding_on_curves, result.corner_vertices_held), (4 * (n - 1), 4))
+        self.assertLessEqual(result.max_distance_to_target, 1e-12)
+        self.assertTrue(np.array_equal(slid[corner], vertices[corner]))
+        self.assertTrue(np.all(np.abs(slid[on_side] - rest[on_side]) <= 1e-12))
+        self.assertTrue(mu.check_local_invertibility(slid, triangles, rest=rest))
+        with self.assertRaisesRegex(ValueError, "feature_angle"):
+            mu.untangle(vertices, triangles, slide_boundary=True, feature_angle=0)
+
 
 class Files(unittest.TestCase):
     def setUp(self):

@@ -54,6 +54,11 @@ struct Untangling_options
   std::size_t refinement_budget = default_refinement_budget;
   // The quality rung after a locally invertible result (driver/quality_rung.h).
   bool optimize_quality = false;
+  // Boundary vertices slide on the input's boundary surface and its feature
+  // curves (driver/sliding_rounds.h); an edge is a feature when its facets'
+  // planes meet at more than feature_angle degrees.
+  bool sliding_boundary = false;
+  double feature_angle = 35;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };

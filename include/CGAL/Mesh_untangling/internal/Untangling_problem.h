@@ -5,6 +5,7 @@
 
 #include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/internal/Vertex_links.h>
+#include <CGAL/Mesh_untangling/internal/sliding/Sliding_vertices.h>
 #include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
 #include <Eigen/Dense>
@@ -56,6 +57,12 @@ struct Untangling_input
   // otherwise.  Stars are then judged on the surface (seamless_stars.h),
   // and neither phantoms, continuation, local repair nor refinement apply.
   Vertex_links<d> links;
+
+  // Boundary vertices that slide on a surface or a curve (sliding/,
+  // driver/sliding_rounds.h): free in their tangent directions only.  Empty
+  // otherwise.  A sliding vertex is not a free boundary vertex: the target
+  // keeps the boundary's shape.
+  Sliding_vertices<d> sliding;
 
   // The last `phantom_elements` elements and `phantom_vertices` positions are
   // phantoms (append_phantom_elements()): they shape the energy, but sizes,
@@ -148,11 +155,20 @@ struct Untangling_problem
   // linked vertex is free or fixed with its representative, and the
   // solvers' unknowns are the representatives (Newton_solver's Free_numbering).
   Vertex_links<d> links;
+  // Sliding vertices (their projectors do not change with the normalization).
+  Sliding_vertices<d> sliding;
 
   Vector center = Vector::Zero();
   double scale = 1;
 
   Vector point(std::size_t v) const { return Eigen::Map<const Vector>(&x[d * v]); }
+
+  /// Whether the solvers move sliding vertices back onto curved targets.
+  bool retracts() const { return !sliding.empty() && bool(sliding.project_onto_targets); }
+  /// Moves the sliding vertices of the map `y` (normalized) onto their targets.
+  void retract(double* y) const { if(retracts()) sliding.project_onto_targets(y, center, scale, nullptr); }
+  /// Moves the sliding vertices of x onto their targets and takes their tangents there.
+  void retarget() { if(retracts()) sliding.project_onto_targets(x.data(), center, scale, &sliding.tangent); }
   Vector to_user(const Vector& p) const { return p * scale + center; }
   Vector from_user(const Vector& p) const { return (p - center) / scale; }
 };
@@ -234,7 +250,7 @@ bool find_free_boundary_vertex(const Untangling_input<d>& in)
                                             in.number_of_mesh_elements())
                      : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
   for(std::size_t v = 0; v < n; ++v)
-    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v])) return true;
+    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v]) && !in.sliding.slides(v)) return true;
   return false;
 }
 
@@ -304,6 +320,7 @@ void validate_input(const Untangling_input<d>& in)
   if(in.phantom_elements > m || in.phantom_vertices > n)
     throw std::invalid_argument("more phantoms than elements or vertices");
   validate_links<d>(in.links, n, in.is_fixed);
+  validate_sliding<d>(in.sliding, in.number_of_mesh_vertices());
   if(in.has_links() && (in.phantom_elements > 0 || in.has_cells()))
     throw std::invalid_argument("linked vertices (seams) take neither phantoms nor cells");
   const std::size_t mesh_m = in.number_of_mesh_elements(), mesh_n = in.number_of_mesh_vertices();
@@ -728,6 +745,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     P.links.finish();
     apply_links<d>(P.links, P.x.data());   // (the representative's uv wins over a given one that disagrees)
   }
+  P.sliding = in.sliding;
   {
     std::vector<double> scratch;
     auto targets = oriented_targets<d>(in, degenerate_quality, P);

@@ -117,6 +117,7 @@ Untangling_input<d> region_problem(const Untangling_input<d>& in, const std::vec
     sub.positions.push_back(in.positions[v]);
     sub.is_fixed.push_back(on_cut[v] || (!in.is_fixed.empty() && in.is_fixed[v]));
   }
+  sub.sliding = in.sliding.restricted_to(vertex_of);
   return sub;
 }
 
@@ -189,24 +190,6 @@ Repair_at_stall<d> local_repair_at_stall(const Untangling_options& options)
   };
 }
 
-/// Describes in `r` the map `in` (after a repair, or the quality rung).
-template <int d>
-void describe_repaired_map(const Untangling_input<d>& in, const Untangling_options& options, Untangling_result& r)
-{
-  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
-  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
-  record_verdict(report, r);
-  if(report.has_no_repairable_defect() || report.inverted_elements == 0) {
-    r.status = final_status(report, false, false, false);
-    r.message = r.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(report) : "";
-  }
-  r.min_scaled_det_after = determinant_summary(P, P.x.data()).min_det;
-  measure_quality(P, r);
-  const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
-  r.final_energy = energy<d>(P, P.x.data(), tiny_epsilon, theta);
-  r.final_epsilon = tiny_epsilon;
-}
-
 /// After a run `r` of `untangle` from the map `given` that left inverted
 /// elements in `in` on a problem to which the repair applies
 /// (Problem_kind::local_repair_applies): the local phase on `in` when they
@@ -250,7 +233,7 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
   r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(repaired) {
     r.input_returned = false;
-    describe_repaired_map<d>(in, options, r);
+    describe_map<d>(in, options, r);
   }
 }
 

@@ -61,6 +61,10 @@ Untangling_options read_options(const NamedParameters& np)
   o.refinement_budget = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement_budget),
                                          Mesh_untangling::default_refinement_budget);
   o.optimize_quality = choose_parameter(get_parameter(np, internal_np::mesh_untangling_optimize_quality), false);
+  o.sliding_boundary = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
+  o.feature_angle = choose_parameter(get_parameter(np, internal_np::mesh_untangling_feature_angle), 35.);
+  if(!(o.feature_angle > 0 && o.feature_angle <= 90))
+    o.invalid_parameter = "feature_angle must be in (0, 90] degrees, not " + std::to_string(o.feature_angle);
   if(o.refinement_budget == 0)
     o.invalid_parameter = "refinement_budget must be at least 1 vertex, not 0";
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())

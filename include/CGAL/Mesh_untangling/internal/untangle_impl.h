@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_untangling/internal/driver/Problem_kind.h>
 #include <CGAL/Mesh_untangling/internal/driver/input_handed_back.h>
 #include <CGAL/Mesh_untangling/internal/driver/ladder.h>
+#include <CGAL/Mesh_untangling/internal/driver/sliding_rounds.h>
 #include <CGAL/Mesh_untangling/internal/driver/validate_stars.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/stage_trace.h>
@@ -43,11 +44,13 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   Untangling_options timed = options;
   timed.deadline = std::min(options.deadline, deadline_after(options.max_seconds));
   std::optional<Problem_kind<d>> kind;
+  std::shared_ptr<Sliding_target<d>> target;
   try {
     if(!options.invalid_parameter.empty()) throw std::invalid_argument(options.invalid_parameter);
     CGAL_MESH_UNTANGLING_STAGE("untangle: start");
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
     CGAL_MESH_UNTANGLING_STAGE("validate_input");
+    if(options.sliding_boundary) target = slide_the_boundary<d>(in, options);
     kind.emplace(in, requested);   // once: the strategies below ask it
     if(const std::string refused = kind->refusal(options); !refused.empty()) throw std::invalid_argument(refused);
     validate_stars<d>(in, *kind);
@@ -66,8 +69,13 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
   Progress_meter progress(options.progress, options);
   if(!progress.start()) return cancelled_run<d>(in, given, options, r, phantoms_used);
   try {
-    r = climb_the_ladder<d>(in, given, with_progress(timed, progress), *kind, protection, progress, phantoms_used,
-                            added);
+    const auto climb = [&](const Untangling_options& o) {
+      if(!target) return climb_the_ladder<d>(in, given, o, *kind, protection, progress, phantoms_used, added);
+      std::vector<Eigen::Matrix<double, d, 1>> start = in.positions;   // (a round starts from the last projected map)
+      return climb_the_ladder<d>(in, start, o, *kind, protection, progress, phantoms_used, added);
+    };
+    r = target ? climb_in_sliding_rounds<d>(in, *target, with_progress(timed, progress), climb)
+               : climb(with_progress(timed, progress));
     CGAL_MESH_UNTANGLING_STAGE("climb_the_ladder");
     // (a refinement that succeeded has changed the mesh: its result stands)
     if(progress.cancelled() && r.vertices_added == 0) return cancelled_run<d>(in, given, options, r, phantoms_used);

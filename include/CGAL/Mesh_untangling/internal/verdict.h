@@ -10,7 +10,9 @@
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/internal/Energy.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 #include <CGAL/Mesh_untangling/internal/invertibility/seamless_stars.h>
 
 #include <algorithm>
@@ -167,6 +169,28 @@ inline Untangling_status final_status(const Invertibility_report& report, bool n
   if(stopped) return Untangling_status::STOPPED_BY_CALLBACK;
   if(report.inverted_elements > 0) return Untangling_status::INVERTED_ELEMENTS_LEFT;
   return Untangling_status::COVERINGS_LEFT;
+}
+
+/// Describes in `r` the map `in` that a step after the runs left (the
+/// local repair, the refinement, the quality rung, a projection of sliding
+/// vertices): the exact verdict and the figures; the status is the
+/// verdict's when it found no defect a free vertex can repair, or when the
+/// runs' was a success that the map no longer has; else the runs'.
+template <int d>
+void describe_map(const Untangling_input<d>& in, const Untangling_options& options, Untangling_result& r)
+{
+  const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
+  const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
+  record_verdict(report, r);
+  if(report.has_no_repairable_defect() || report.inverted_elements == 0 || r.status == Untangling_status::SUCCESS) {
+    r.status = final_status(report, false, false, false);
+    r.message = r.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(report) : "";
+  }
+  r.min_scaled_det_after = determinant_summary(P, P.x.data()).min_det;
+  measure_quality(P, r);
+  const double theta = options.theta >= 0 ? options.theta : default_theta<d>();
+  r.final_energy = energy<d>(P, P.x.data(), tiny_epsilon, theta);
+  r.final_epsilon = tiny_epsilon;
 }
 
 } // namespace internal

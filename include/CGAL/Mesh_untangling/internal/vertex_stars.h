@@ -122,6 +122,12 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
   return on_boundary;
 }
 
+/// The facets of a cell in cyclic order: a quadrilateral's edges, a
+/// hexahedron's faces (VTK's vertex order).
+constexpr int quadrilateral_edges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+constexpr int hexahedron_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
 /// The boundary vertices of a mesh of cells given by their corner simplices
 /// (Untangling_input::corners_per_cell = K): vertices of the cell facets
 /// (quadrilateral edges, hexahedron faces) that belong to one cell only.
@@ -134,9 +140,6 @@ std::vector<char> cell_boundary_vertices(std::size_t n, const std::vector<std::a
 {
   constexpr std::size_t facet_size = d == 2 ? 2 : 4;
   using Facet = std::array<std::size_t, facet_size>;
-  static const int quadrilateral_edges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const int hexahedron_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   const std::size_t K = corners_per_cell, cells = std::min(number_of_elements, elements.size()) / K;
   std::vector<Facet> facets;
   facets.reserve(cells * (d == 2 ? 4 : 6));

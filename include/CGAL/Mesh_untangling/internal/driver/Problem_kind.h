@@ -25,7 +25,8 @@ class Problem_kind
 public:
   /// The kind of `in` (a valid input, without phantoms) under `request`.
   Problem_kind(const Untangling_input<d>& in, const Protection_request<d>& request)
-    : cells_(in.has_cells()), seamless_(in.has_links()), free_boundary_(has_free_boundary_vertex<d>(in)),
+    : cells_(in.has_cells()), seamless_(in.has_links()), sliding_(!in.sliding.empty()),
+      free_boundary_(has_free_boundary_vertex<d>(in)),
       targets_given_(!in.targets.empty()),
       anything_fixed_(std::find(in.is_fixed.begin(), in.is_fixed.end(), true) != in.is_fixed.end()),
       phantoms_supplied_(request.supplied.has_value()),
@@ -45,6 +46,10 @@ public:
     if(cells_ && phantoms_supplied_)
       return "phantom elements protect vertex stars of simplices, not the corners of cells";
     if(seamless_ && phantoms_supplied_) return "phantom elements are not offered for seamless parameterizations";
+    if(options.sliding_boundary && options.refinement)
+      return "refinement is not offered with a sliding boundary (its runs keep the boundary fixed)";
+    if(options.sliding_boundary && phantoms_supplied_)
+      return "phantom elements are not offered with a sliding boundary (they are made for a fixed or free one)";
     return "";
   }
 
@@ -64,7 +69,9 @@ public:
   /// Phantom elements are built on vertex stars, which the overlapping
   /// corners of cells do not form; built on the stars of a cut mesh, they
   /// would protect a seam's wedge as a boundary star (see the manual).
-  bool takes_phantoms() const { return !cells_ && !seamless_; }
+  /// A sliding boundary keeps its shape on its target: it is not free, and
+  /// phantoms (made for a free one) would pull it away.
+  bool takes_phantoms() const { return !cells_ && !seamless_ && !sliding_; }
 
   /// The protection a run of this kind uses: the request, or none.
   const Protection_request<d>& protection(const Protection_request<d>& request) const
@@ -78,14 +85,16 @@ public:
 
   /// Whether a failed 2D run may start again from the convex embedding of a
   /// disk (tutte_start.h): nothing fixed, triangles, no seams.
-  bool convex_start_applies() const { return d == 2 && !anything_fixed_ && !cells_ && !seamless_; }
+  /// (A sliding boundary would leave its target for the circle.)
+  bool convex_start_applies() const { return d == 2 && !anything_fixed_ && !cells_ && !seamless_ && !sliding_; }
 
   /// Whether a motion of the fixed vertices from a rest shape may be
   /// followed (continuation.h); the rest must exist too (continuation_start).
-  /// The rest of a seamless problem is a 3D surface, not a start in the plane.
+  /// The rest of a seamless problem is a 3D surface, not a start in the
+  /// plane; a sliding boundary has no motion to follow.
   bool continuation_may_apply(const Untangling_options& options) const
   {
-    return options.continuation != Continuation::NEVER && !seamless_ && anything_fixed_;
+    return options.continuation != Continuation::NEVER && !seamless_ && !sliding_ && anything_fixed_;
   }
 
   /// Whether the automatic policy follows the motion: with every boundary
@@ -135,7 +144,7 @@ public:
   }
 
 private:
-  bool cells_, seamless_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
+  bool cells_, seamless_, sliding_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
   Protection_request<d> no_protection_;
 };
 

@@ -149,6 +149,7 @@ Untangling_input<d> with_ideal_targets(const Untangling_input<d>& in, const std:
   ideal.is_fixed = in.is_fixed;
   ideal.corners_per_cell = in.corners_per_cell;
   ideal.links = in.links;
+  ideal.sliding = in.sliding;
   const auto shape = ideal_shape<d>(in.has_cells());
   ideal.targets.resize(m);
   double total_volume = 0;
@@ -216,7 +217,7 @@ void optimize_quality(Untangling_input<d>& in, const Untangling_options& options
   if(!best_phantoms) return;
   in.positions = current.positions;
   if(phantoms_used) *phantoms_used = std::move(*best_phantoms);
-  describe_repaired_map<d>(in, options, r);
+  describe_map<d>(in, options, r);
 }
 
 } // namespace internal

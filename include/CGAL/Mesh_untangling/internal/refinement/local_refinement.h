@@ -203,7 +203,7 @@ void refine_until_locally_invertible(Untangling_input<d>& in, std::vector<Eigen:
   add_counts(r, work);
   r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(!repaired) return;
-  describe_repaired_map<d>(trial, options, r);
+  describe_map<d>(trial, options, r);
   r.input_returned = false;
   r.vertices_added = splits.size();
   r.number_of_vertices = trial.positions.size();

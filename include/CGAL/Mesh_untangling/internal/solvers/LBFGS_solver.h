@@ -86,19 +86,29 @@ public:
     Inner_statistics stats;
     // LBFGSpp moves x in place and may throw from inside a line search:
     // remember the best point seen so that a failed search loses nothing.
+    // With a sliding boundary on a curved target, F is the energy where x's
+    // sliding vertices project (a retraction): its gradient is the tangent one.
+    P.retarget();
     Eigen::VectorXd best = Eigen::Map<Eigen::VectorXd>(P.x.data(), P.x.size());
     double best_value = std::numeric_limits<double>::infinity();
+    std::vector<double> on_target;
     auto F = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) {
       if(out_of_time()) throw Time_is_up();
       ++stats.evaluations;
-      const double value = energy<d>(P, x.data(), eps, theta, g.data());
+      const double* at = x.data();
+      if(P.retracts()) {
+        on_target.assign(x.data(), x.data() + x.size());
+        P.retract(on_target.data());
+        at = on_target.data();
+      }
+      const double value = energy<d>(P, at, eps, theta, g.data());
       // (vectors of a million entries: the copy and the scan in parallel too)
       if(!std::isfinite(value) || !all_finite(g.data(), g.size())) {
         stats.finite = false;   // reported; the line search sees a wall
         g.setZero();
         return std::numeric_limits<double>::max();
       }
-      if(value < best_value) { best_value = value; parallel_copy(x.data(), x.size(), best.data()); }
+      if(value < best_value) { best_value = value; parallel_copy(at, x.size(), best.data()); }
       return value;
     };
     LBFGSpp::LBFGSParam<double> param;

@@ -128,7 +128,9 @@ public:
 
 private:
   std::unique_lock<std::mutex> lock_;
-  int active_levels_ = 0;
+#ifdef CGAL_MESH_UNTANGLING_CHOLMOD_OPENMP
+  int active_levels_ = 0;   // (only with OpenMP: an unused field is a warning under clang)
+#endif
 };
 
 /// CHOLMOD's LL^T, supernodal or simplicial (see Newton_solver::analyze).
@@ -280,6 +282,15 @@ public:
 
   int number_of_free() const { return free_.count; }
   int free_index(std::size_t v) const { return free_.index[v]; }
+
+  /// The diagonal block of free vertex j, where it is stored (the first of
+  /// its block column: a row lists j itself first).
+  Eigen::Map<Eigen::Matrix<double, d, d>, 0, Eigen::OuterStride<>> diagonal_block(int j)
+  {
+    const auto* outer = matrix_.outerIndexPtr();
+    const Eigen::Index blocks = (outer[d * j + 1] - outer[d * j]) / d;
+    return {matrix_.valuePtr() + outer[d * j], d, d, Eigen::OuterStride<>(d * blocks)};
+  }
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
@@ -578,6 +589,10 @@ public:
     // counted them: the step bound is only sought from a valid map, where it exists.
     std::size_t non_positive = 0;
     Quasi_newton_pairs pairs;
+    if(P.retracts()) {   // (tangents taken anew: the Hessian's projections with them)
+      P.retarget();
+      cache_eps_ = -1;
+    }
 
     double E = assemble(P, eps, theta, g, &non_positive);
     ++stats.evaluations;
@@ -703,7 +718,8 @@ public:
   {
     pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
-    if(cache_.size() != P.elements.size() || cache_eps_ != eps || cache_theta_ != theta) {
+    const bool fresh = cache_.size() != P.elements.size() || cache_eps_ != eps || cache_theta_ != theta;
+    if(fresh) {
       std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
       cache_.assign(P.elements.size(), Element_key());
       hessians_.resize(P.elements.size());
@@ -743,6 +759,7 @@ public:
       key.valid = true;
       return 0.;
     });
+    if(fresh && !P.sliding.empty()) hold_normal_directions(P);
   }
 
 private:
@@ -767,7 +784,8 @@ private:
   };
 
   /// The step direction of the free unknowns, per vertex (zero on fixed
-  /// ones; a linked vertex turns its representative's: the step keeps the links).
+  /// ones; a linked vertex turns its representative's: the step keeps the
+  /// links; a sliding one's is tangent).
   void scatter_to_vertices(const Untangling_problem<d>& P, const Eigen::VectorXd& direction,
                            std::vector<double>& vertex_direction) const
   {
@@ -778,15 +796,21 @@ private:
         Eigen::Map<Eigen::Matrix<double, d, 1>> step(&vertex_direction[d * v]);
         step = quarter_turns(P.links.turns[v], Eigen::Matrix<double, d, 1>(step));
       }
+      if(f >= 0 && P.sliding.slides(v)) {   // (the solve's rounding off the tangent too)
+        Eigen::Map<Eigen::Matrix<double, d, 1>> step(&vertex_direction[d * v]);
+        step = P.sliding.projector(v) * Eigen::Matrix<double, d, 1>(step);
+      }
     }
   }
 
-  /// x + alpha * direction, into `to`.
-  static void move(const std::vector<double>& x, const std::vector<double>& direction, double alpha,
-                   std::vector<double>& to)
+  /// x + alpha * direction, into `to`, sliding vertices moved back onto
+  /// their targets.
+  static void move(const Untangling_problem<d>& P, const std::vector<double>& x, const std::vector<double>& direction,
+                   double alpha, std::vector<double>& to)
   {
     to.resize(x.size());
     for(std::size_t i = 0; i < x.size(); ++i) to[i] = x[i] + alpha * direction[i];
+    P.retract(to.data());
   }
 
   /// Armijo backtracking on F(., eps), finite everywhere for eps > 0, from
@@ -807,7 +831,7 @@ private:
     t.energy = E;
     for(int ls = 0; ls < 40 && !t.accepted; ++ls) {
       if(ls > 0) t.alpha /= 2;
-      move(P.x, w.vertex_direction, t.alpha, w.trial);
+      move(P, P.x, w.vertex_direction, t.alpha, w.trial);
       t.derivatives_at_trial = ls == 0 && !last;
       t.energy = t.derivatives_at_trial
                    ? energy_and_free_gradient(P, w.trial.data(), eps, theta, w.g_trial, &w.non_positive_at_trial)
@@ -826,7 +850,7 @@ private:
                    Trial& t, Inner_statistics& stats)
   {
     for(int k = 0; k < max_extrapolations && 2 * t.alpha < step_fraction * bound; ++k) {
-      move(P.x, w.vertex_direction, 2 * t.alpha, w.further);
+      move(P, P.x, w.vertex_direction, 2 * t.alpha, w.further);
       const double E_further = energy<d>(P, w.further.data(), eps, theta);
       ++stats.evaluations;
       if(!(E_further < t.energy)) break;
@@ -930,9 +954,29 @@ private:
 #endif
   }
 
+  /// Adds c (I - T_v) to the diagonal block of every sliding vertex v, c
+  /// the mean of its tangent block's diagonal: the normal part of a step
+  /// then solves c n = 0 apart from the tangent part (Sliding_vertices.h),
+  /// at the scale of the tangent one.  Once per fresh H: the updates of
+  /// update_hessian add element changes only.
+  void hold_normal_directions(const Untangling_problem<d>& P)
+  {
+    using Matrix = Eigen::Matrix<double, d, d>;
+    for(std::size_t s = 0; s < P.sliding.size(); ++s) {
+      const int j = pattern_.free_index(P.sliding.vertex[s]);
+      if(j < 0) continue;
+      const Matrix& T = P.sliding.tangent[s];
+      auto block = pattern_.diagonal_block(j);
+      const double directions = T.trace(), curvature = block.trace();
+      const double c = directions > 0.5 && curvature > 0 ? curvature / directions : 1.;
+      block += c * (Matrix::Identity() - T);
+    }
+  }
+
   /// Adds the packed lower triangle of an element's vertex Hessian (see
   /// update_hessian) to H, block by block; the block of linked vertices
-  /// a, b goes to their representatives as Q_a^T B Q_b.
+  /// a, b goes to their representatives as Q_a^T B Q_b, that of sliding
+  /// ones as T_a B T_b.
   void add_element_hessian(const Untangling_problem<d>& P, std::size_t k, const Packed_hessian& lower)
   {
     auto entry = [&lower](int row, int col) { return lower[packed_index(row, col)]; };
@@ -948,6 +992,11 @@ private:
             block.col(c) = quarter_turns(-turns_a, Eigen::Matrix<double, d, 1>(block.col(c)));
           for(int r = 0; r < d; ++r)   // (B Q_b)^T = Q_b^T B^T
             block.row(r) = quarter_turns(-turns_b, Eigen::Matrix<double, d, 1>(block.row(r).transpose())).transpose();
+        }
+        if(!P.sliding.empty()) {
+          const std::size_t u = P.elements[k][a], v = P.elements[k][b];
+          if(P.sliding.slides(u)) block = P.sliding.projector(u) * block;
+          if(P.sliding.slides(v)) block = block * P.sliding.projector(v);
         }
         pattern_.add(k, a, b, block);
       }

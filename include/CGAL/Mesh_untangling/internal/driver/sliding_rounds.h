@@ -1,0 +1,164 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A boundary that slides on the input's own (Untangling_options::sliding_boundary).
+//
+// The target is the boundary as given (sliding/Sliding_target.h): each
+// boundary vertex slides on its surface patch or feature curve, corners and
+// fixed vertices stay.  The solvers move a sliding vertex in its tangent
+// plane or line (sliding/Sliding_vertices.h), which keeps a plane or a
+// straight line exactly and a curved target to second order; so the ladder
+// climbs in rounds: after each, every sliding vertex is projected onto the
+// closest point of its target and takes its tangent there, the exact
+// verdict is taken on the projected map, and a map that the projection
+// left tangled climbs again from there.  The projections shrink with the
+// motion a round makes, so the rounds stop when the map is locally
+// invertible after its projection, the budget is spent, or sliding_rounds
+// have run; the result is always a projected map.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_SLIDING_ROUNDS_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_SLIDING_ROUNDS_H
+
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/driver/Run.h>
+#include <CGAL/Mesh_untangling/internal/sliding/Sliding_target.h>
+#include <CGAL/Mesh_untangling/internal/verdict.h>
+#include <CGAL/Mesh_untangling/internal/vertex_stars.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// Rounds of untangling and projection at most.
+constexpr int sliding_rounds = 8;
+
+/// The facets of the mesh part of `in` that belong to one element only,
+/// each in cyclic order: a simplex's facets, or for cells
+/// (Untangling_input::corners_per_cell) a quadrilateral's edges or a
+/// hexahedron's faces (cell c's vertex i is its corner i's first vertex).
+template <int d>
+std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>& in)
+{
+  using Facet = std::vector<std::size_t>;
+  std::vector<std::pair<Facet, Facet>> facets;   // (sorted, cyclic)
+  const auto add = [&facets](Facet cyclic) {
+    Facet sorted = cyclic;
+    std::sort(sorted.begin(), sorted.end());
+    facets.emplace_back(std::move(sorted), std::move(cyclic));
+  };
+  const std::size_t m = in.number_of_mesh_elements();
+  if(in.has_cells()) {
+    const std::size_t K = in.corners_per_cell;
+    for(std::size_t c = 0; c < m / K; ++c) {
+      const auto vertex = [&](int i) { return in.elements[K * c + std::size_t(i)][0]; };
+      if constexpr(d == 2) {
+        for(const auto& e : quadrilateral_edges) add({vertex(e[0]), vertex(e[1])});
+      } else {
+        for(const auto& f : hexahedron_faces) add({vertex(f[0]), vertex(f[1]), vertex(f[2]), vertex(f[3])});
+      }
+    }
+  } else {
+    for(std::size_t k = 0; k < m; ++k)
+      for(int skip = 0; skip <= d; ++skip) {
+        Facet f;
+        for(int i = 0; i <= d; ++i)
+          if(i != skip) f.push_back(in.elements[k][i]);
+        add(std::move(f));
+      }
+  }
+  std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Facet> boundary;
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i;
+    while(j < facets.size() && facets[j].first == facets[i].first) ++j;
+    if(j - i == 1) boundary.push_back(std::move(facets[i].second));
+    i = j;
+  }
+  return boundary;
+}
+
+/// Makes the boundary of `in` (valid, without phantoms) slide on itself as
+/// `options` ask: the corners join the fixed vertices, every other boundary
+/// vertex slides with its tangent at its position (already on its target).
+/// Throws std::invalid_argument for a seamless map.
+template <int d>
+std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, const Untangling_options& options)
+{
+  if(in.has_links()) throw std::invalid_argument("a sliding boundary is not offered for seamless parameterizations");
+  std::vector<bool> fixed = in.is_fixed;
+  auto target = std::make_shared<Sliding_target<d>>(in.positions, boundary_facets<d>(in), fixed, options.feature_angle);
+  fixed.resize(in.positions.size(), false);
+  for(std::size_t v = 0; v < fixed.size(); ++v)
+    if(target->role(v) == Sliding_role::CORNER) fixed[v] = true;
+  in.is_fixed = std::move(fixed);
+  target->project(in.positions, in.sliding);   // (moves nothing: the target is where they are)
+  // (the problems made from `in` copy its slots; a sub-problem's drop this)
+  in.sliding.project_onto_targets = [target, slot = in.sliding.slot](double* x, const Eigen::Matrix<double, d, 1>& center,
+                                                                     double scale, std::vector<Eigen::Matrix<double, d, d>>* tangent) {
+    target->project(x, center, scale, slot, tangent);
+  };
+  in.free_boundary_vertex.reset();
+  return target;
+}
+
+/// What `target` records about the run in `r`: the vertices' roles, the
+/// rounds, and the largest distance of a sliding vertex from its target.
+template <int d>
+void record_sliding(Sliding_target<d>& target, const Untangling_input<d>& in, int rounds, Untangling_result& r)
+{
+  r.vertices_sliding_on_surfaces = target.count(Sliding_role::SURFACE);
+  r.vertices_sliding_on_curves = target.count(Sliding_role::CURVE);
+  r.corner_vertices_held = target.count(Sliding_role::CORNER);
+  r.sliding_rounds = std::size_t(rounds);
+  r.max_distance_to_target = target.largest_distance(in.positions);
+}
+
+/// Climbs the ladder (`climb(options)` on `in`, from its positions) in
+/// rounds, projecting the sliding vertices onto `target` after each (see
+/// the file's comment).  `in` ends at a projected map, which the result
+/// describes with the first round's figures of the given map.
+template <int d, class Climb>
+Untangling_result climb_in_sliding_rounds(Untangling_input<d>& in, Sliding_target<d>& target,
+                                          const Untangling_options& options, Climb&& climb)
+{
+  Untangling_result r = climb(options);
+  const Untangling_result first = r;
+  int round = 1;
+  // (a projection within this of the boundary's size leaves the verdict as it was, nearly always)
+  const double negligible = 1e-9 * target.diagonal();
+  for(;; ++round) {
+    if(r.status == Untangling_status::INVALID_INPUT) break;
+    const double moved = target.project(in.positions, in.sliding);
+    if(moved == 0) break;   // (the runs kept every target exactly: planes, lines)
+    describe_map<d>(in, options, r);
+    if(reached_goal(r.status) || moved <= negligible || round >= sliding_rounds || out_of_time(options) ||
+       r.outer_iterations >= options.max_outer_iterations)
+      break;
+    Untangling_options rest = options;
+    rest.max_outer_iterations -= r.outer_iterations;
+    Untangling_result next = climb(rest);
+    add_work(next, r);
+    r = std::move(next);
+  }
+  r.inverted_before = first.inverted_before;
+  r.min_scaled_det_before = first.min_scaled_det_before;
+  r.min_quality_before_optimization = first.min_quality_before_optimization;
+  record_sliding<d>(target, in, round, r);
+  return r;
+}
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_SLIDING_ROUNDS_H

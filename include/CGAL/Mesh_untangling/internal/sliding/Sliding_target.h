@@ -1,0 +1,411 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The target of a sliding boundary: the boundary of the input as given,
+// cut by its feature edges into surface patches and feature curves.
+//
+// An edge of the boundary surface is a feature when its two facets' planes
+// meet at more than the feature angle, or when it has not two facets.  The
+// planes' angle, not the normals': in a tangled input a facet may be folded
+// over, its normal reversed, and that makes no feature.  A vertex on no
+// feature edge slides on its patch (the facets reached without crossing a
+// feature edge), one on two feature edges that continue each other (within
+// the feature angle, as lines) on their curve, and any other stays where it
+// is: a corner.  In 2D the boundary is its polyline: every boundary edge is
+// on a curve, and a vertex where the polyline turns by more than the
+// feature angle is a corner.
+//
+// A vertex is projected onto the closest point of its own patch (the
+// patch's triangles, a quadrilateral split in two) or of its own curve,
+// never onto another: a vertex near a sharp edge does not jump across it.
+// The closest point is found by a walk from the triangle or segment the
+// vertex was last projected on to a closer neighbour while there is one: the
+// solvers project after every step, which moves a vertex little, and a
+// search of the whole patch (an AABB tree) took half of a run's time (kitty,
+// 7,083 hexahedra).  The walk keeps a vertex on its own sheet where a patch
+// comes back close to itself.
+#ifndef CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
+#define CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
+
+#include <CGAL/Mesh_untangling/internal/sliding/Sliding_vertices.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace internal {
+
+/// What a boundary vertex does when the boundary slides.
+enum class Sliding_role : char { INTERIOR, SURFACE, CURVE, CORNER, FIXED };
+
+template <int d>
+class Sliding_target
+{
+public:
+  using Vector = Eigen::Matrix<double, d, 1>;
+  using Matrix = Eigen::Matrix<double, d, d>;
+  using Facet = std::vector<std::size_t>;   // a boundary facet's vertices, in cyclic order (2 in 2D)
+
+  /// The target of the boundary `facets` of a mesh at `positions`,
+  /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in degrees.
+  Sliding_target(const std::vector<Vector>& positions, const std::vector<Facet>& facets,
+                 const std::vector<bool>& is_fixed, double feature_angle)
+    : role_(positions.size(), Sliding_role::INTERIOR), place_(positions.size(), 0),
+      min_cos_(std::cos(feature_angle * 3.14159265358979323846 / 180))
+  {
+    for(const Facet& f : facets)
+      for(std::size_t v : f) role_[v] = Sliding_role::SURFACE;
+    measure_diagonal(positions);
+    const std::vector<std::array<std::size_t, 2>> features = feature_edges(positions, facets);
+    classify(positions, features, is_fixed);
+    if constexpr(d == 3) make_patches(positions, facets, features);
+    make_curves(positions, features);
+  }
+
+  Sliding_role role(std::size_t v) const { return role_[v]; }
+  std::size_t count(Sliding_role role) const { return std::size_t(std::count(role_.begin(), role_.end(), role)); }
+  bool slides(std::size_t v) const { return role_[v] == Sliding_role::SURFACE || role_[v] == Sliding_role::CURVE; }
+  /// The bounding box diagonal of the boundary as given.
+  double diagonal() const { return diagonal_; }
+
+  /// Moves every sliding vertex of `positions` to the closest point of its
+  /// patch or curve and sets its tangent projector there in `sliding`
+  /// (filled on the first call); returns the largest distance moved.
+  double project(std::vector<Vector>& positions, Sliding_vertices<d>& sliding)
+  {
+    const bool first = sliding.empty();
+    return project_each([&](std::size_t v) { return positions[v]; },
+                        [&](std::size_t v, const Vector& point, const Matrix& tangent) {
+                          positions[v] = point;
+                          if(first) sliding.add(v, role_.size(), tangent);
+                          else sliding.tangent[std::size_t(sliding.slot[v])] = tangent;
+                        });
+  }
+
+  /// The same on a problem's normalized map x (a point is center + scale
+  /// x), the tangents set in `tangent` (at each vertex's `slot`, as
+  /// Sliding_vertices numbers them) when it is given.
+  void project(double* x, const Vector& center, double scale, const std::vector<int>& slot, std::vector<Matrix>* tangent)
+  {
+    project_each([&](std::size_t v) { return Vector(center + scale * Eigen::Map<const Vector>(x + d * v)); },
+                 [&](std::size_t v, const Vector& point, const Matrix& T) {
+                   Eigen::Map<Vector>(x + d * v) = (point - center) / scale;
+                   if(tangent) (*tangent)[std::size_t(slot[v])] = T;
+                 });
+  }
+
+  /// The largest distance of a sliding vertex of `positions` from its target.
+  double largest_distance(const std::vector<Vector>& positions)
+  {
+    const std::vector<std::size_t> hints = place_;   // (measuring leaves the walks where they were)
+    double largest = 0;
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(!slides(v)) continue;
+      const Vector point = role_[v] == Sliding_role::CURVE ? onto_curve(v, positions[v]).first : onto_patch(v, positions[v]).first;
+      largest = std::max(largest, (point - positions[v]).norm());
+    }
+    place_ = hints;
+    return largest;
+  }
+
+private:
+  using Edge = std::array<std::size_t, 2>;
+
+  /// For every sliding vertex v at `position(v)`: `moved(v, closest point, tangent)`; returns the largest distance.
+  template <class Position, class Moved>
+  double project_each(const Position& position, const Moved& moved)
+  {
+    double largest = 0;
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(!slides(v)) continue;
+      const Vector p = position(v);
+      const auto [point, tangent] = role_[v] == Sliding_role::CURVE ? onto_curve(v, p) : onto_patch(v, p);
+      largest = std::max(largest, (point - p).norm());
+      moved(v, point, tangent);
+    }
+    return largest;
+  }
+
+  void measure_diagonal(const std::vector<Vector>& positions)
+  {
+    Vector lo = Vector::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for(std::size_t v = 0; v < role_.size(); ++v)
+      if(role_[v] != Sliding_role::INTERIOR) { lo = lo.cwiseMin(positions[v]); hi = hi.cwiseMax(positions[v]); }
+    diagonal_ = (hi - lo).allFinite() ? (hi - lo).norm() : 0.;
+  }
+
+  /// Whether two directions (normals, or edges) make lines or planes that
+  /// meet at more than the feature angle; a zero one makes no feature.
+  bool apart(const Vector& a, const Vector& b) const
+  {
+    const double na = a.norm(), nb = b.norm();
+    if(!(na > 0 && nb > 0)) return false;
+    return std::abs(a.dot(b)) < min_cos_ * na * nb;
+  }
+
+  static Vector facet_normal(const std::vector<Vector>& p, const Facet& f)
+  {
+    if constexpr(d == 3) {
+      const Vector a = f.size() == 3 ? Vector(p[f[1]] - p[f[0]]) : Vector(p[f[2]] - p[f[0]]);
+      const Vector b = f.size() == 3 ? Vector(p[f[2]] - p[f[0]]) : Vector(p[f[3]] - p[f[1]]);
+      return a.cross(b);
+    } else {
+      const Vector t = p[f[1]] - p[f[0]];
+      return Vector(-t[1], t[0]);
+    }
+  }
+
+  /// The feature edges, each with its smaller vertex first: in 2D every
+  /// boundary edge; in 3D the edges of the boundary surface whose facets'
+  /// planes are apart, or that have not two facets.
+  std::vector<Edge> feature_edges(const std::vector<Vector>& positions, const std::vector<Facet>& facets) const
+  {
+    std::vector<Edge> features;
+    if constexpr(d == 2) {
+      for(const Facet& f : facets) features.push_back({std::min(f[0], f[1]), std::max(f[0], f[1])});
+    } else {
+      std::vector<std::pair<Edge, std::size_t>> sides;   // (edge, facet)
+      for(std::size_t i = 0; i < facets.size(); ++i)
+        for(std::size_t j = 0; j < facets[i].size(); ++j) {
+          const std::size_t a = facets[i][j], b = facets[i][(j + 1) % facets[i].size()];
+          sides.push_back({{std::min(a, b), std::max(a, b)}, i});
+        }
+      std::sort(sides.begin(), sides.end());
+      for(std::size_t i = 0; i < sides.size();) {
+        std::size_t j = i;
+        while(j < sides.size() && sides[j].first == sides[i].first) ++j;
+        if(j - i != 2 || apart(facet_normal(positions, facets[sides[i].second]), facet_normal(positions, facets[sides[i + 1].second])))
+          features.push_back(sides[i].first);
+        i = j;
+      }
+    }
+    std::sort(features.begin(), features.end());
+    return features;
+  }
+
+  void classify(const std::vector<Vector>& positions, const std::vector<Edge>& features, const std::vector<bool>& is_fixed)
+  {
+    std::vector<std::vector<std::size_t>> ends(role_.size());   // per vertex: the other ends of its feature edges
+    for(const Edge& e : features) { ends[e[0]].push_back(e[1]); ends[e[1]].push_back(e[0]); }
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(role_[v] == Sliding_role::INTERIOR) continue;
+      if(!is_fixed.empty() && is_fixed[v]) role_[v] = Sliding_role::FIXED;
+      else if(ends[v].empty()) role_[v] = d == 3 ? Sliding_role::SURFACE : Sliding_role::CORNER;
+      else if(ends[v].size() == 2 && !apart(Vector(positions[v] - positions[ends[v][0]]), Vector(positions[ends[v][1]] - positions[v])))
+        role_[v] = Sliding_role::CURVE;
+      else role_[v] = Sliding_role::CORNER;
+    }
+  }
+
+  // --- Surface patches (3D): triangles (a quadrilateral split in two),
+  // each with its patch, and the triangles around each vertex.
+  struct Triangle
+  {
+    std::array<std::size_t, 3> vertex;
+    std::array<Vector, 3> point;   // as given
+    Vector normal;                 // unit
+    std::size_t patch;
+  };
+
+  static std::size_t find(std::vector<std::size_t>& parent, std::size_t i)
+  {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+
+  void make_patches(const std::vector<Vector>& positions, const std::vector<Facet>& facets, const std::vector<Edge>& features)
+  {
+    std::vector<std::size_t> parent(facets.size());
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    std::map<Edge, std::size_t> first_facet;   // of each edge that is no feature
+    for(std::size_t i = 0; i < facets.size(); ++i)
+      for(std::size_t j = 0; j < facets[i].size(); ++j) {
+        const std::size_t a = facets[i][j], b = facets[i][(j + 1) % facets[i].size()];
+        const Edge e{std::min(a, b), std::max(a, b)};
+        if(std::binary_search(features.begin(), features.end(), e)) continue;
+        const auto [it, inserted] = first_facet.emplace(e, i);
+        if(!inserted) parent[find(parent, i)] = find(parent, it->second);
+      }
+    std::vector<long> patch_of_vertex(role_.size(), -1);
+    for(std::size_t i = 0; i < facets.size(); ++i) {
+      const std::size_t patch = find(parent, i);
+      for(std::size_t j = 1; j + 1 < facets[i].size(); ++j) add_triangle(positions, {facets[i][0], facets[i][j], facets[i][j + 1]}, patch);
+      for(std::size_t v : facets[i]) {
+        if(role_[v] != Sliding_role::SURFACE) continue;
+        if(patch_of_vertex[v] >= 0 && patch_of_vertex[v] != long(patch)) role_[v] = Sliding_role::CORNER;   // (where patches touch)
+        else patch_of_vertex[v] = long(patch);
+      }
+    }
+    triangles_at_.assign(role_.size() + 1, 0);
+    for(const Triangle& t : triangles_)
+      for(std::size_t v : t.vertex) ++triangles_at_[v + 1];
+    for(std::size_t v = 0; v < role_.size(); ++v) triangles_at_[v + 1] += triangles_at_[v];
+    triangle_around_.resize(triangles_at_.back());
+    std::vector<std::size_t> fill(triangles_at_.begin(), triangles_at_.end() - 1);
+    for(std::size_t t = 0; t < triangles_.size(); ++t)
+      for(std::size_t v : triangles_[t].vertex) triangle_around_[fill[v]++] = t;
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(role_[v] != Sliding_role::SURFACE) continue;
+      if(triangles_at_[v] < triangles_at_[v + 1]) place_[v] = triangle_around_[triangles_at_[v]];
+      else role_[v] = Sliding_role::CORNER;   // (only flat facets around it: no plane to slide in)
+    }
+  }
+
+  void add_triangle(const std::vector<Vector>& p, const std::array<std::size_t, 3>& v, std::size_t patch)
+  {
+    const Vector n = Vector(p[v[1]] - p[v[0]]).cross(Vector(p[v[2]] - p[v[0]]));
+    if(!(n.norm() > 1e-14 * diagonal_ * diagonal_)) return;   // (no plane to slide in)
+    triangles_.push_back({v, {p[v[0]], p[v[1]], p[v[2]]}, n.normalized(), patch});
+  }
+
+  /// The closest point of triangle t to x (Ericson, Real-Time Collision
+  /// Detection, 5.1.5: by the Voronoi regions of its vertices and edges).
+  Vector closest_on_triangle(std::size_t t, const Vector& x) const
+  {
+    const Vector &a = triangles_[t].point[0], &b = triangles_[t].point[1], &c = triangles_[t].point[2];
+    const Vector ab = b - a, ac = c - a, ap = x - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if(d1 <= 0 && d2 <= 0) return a;
+    const Vector bp = x - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if(d3 >= 0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if(vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+    const Vector cp = x - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if(d6 >= 0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if(vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if(va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    const double denominator = 1 / (va + vb + vc);
+    return a + ab * (vb * denominator) + ac * (vc * denominator);
+  }
+
+  /// The closest point of v's patch to x, walking from the triangle v was
+  /// last on to whichever triangle around one of its vertices, in the same
+  /// patch, is closer, and the patch's tangent plane there.
+  std::pair<Vector, Matrix> onto_patch(std::size_t v, const Vector& x)
+  {
+    if constexpr(d == 3) {
+      std::size_t at = place_[v];
+      Vector best = closest_on_triangle(at, x);
+      double distance = (best - x).squaredNorm();
+      for(bool moved = true; moved;) {
+        moved = false;
+        const std::size_t from = at;
+        for(std::size_t u : triangles_[from].vertex)
+          for(std::size_t i = triangles_at_[u]; i < triangles_at_[u + 1]; ++i) {
+            const std::size_t t = triangle_around_[i];
+            if(t == at || triangles_[t].patch != triangles_[from].patch) continue;
+            const Vector q = closest_on_triangle(t, x);
+            const double to_t = (q - x).squaredNorm();
+            if(to_t < distance) { distance = to_t; best = q; at = t; moved = true; }
+          }
+      }
+      place_[v] = at;
+      return {best, plane_projector<d>(triangles_[at].normal)};
+    } else {
+      return {x, Matrix::Identity()};   // (no surface in 2D)
+    }
+  }
+
+  // --- Feature curves: polylines between corners, or closed.
+  struct Curve
+  {
+    std::vector<Vector> points;   // a closed curve repeats its first point last
+  };
+
+  void make_curves(const std::vector<Vector>& positions, const std::vector<Edge>& features)
+  {
+    std::vector<std::vector<std::size_t>> ends(role_.size());
+    for(const Edge& e : features) { ends[e[0]].push_back(e[1]); ends[e[1]].push_back(e[0]); }
+    std::map<Edge, bool> walked;
+    const auto walk = [&](std::size_t from, std::size_t next) {
+      Curve curve;
+      curve.points.push_back(positions[from]);
+      std::size_t previous = from, v = next;
+      for(;;) {
+        walked[{std::min(previous, v), std::max(previous, v)}] = true;
+        if(role_[v] == Sliding_role::CURVE) {   // (placed on the segment that starts at it)
+          curve_of_[v] = curves_.size();
+          place_[v] = curve.points.size();
+        }
+        curve.points.push_back(positions[v]);
+        if(role_[v] != Sliding_role::CURVE || v == from) break;
+        const std::size_t after = ends[v][0] == previous ? ends[v][1] : ends[v][0];
+        previous = v;
+        v = after;
+      }
+      curves_.push_back(std::move(curve));
+    };
+    curve_of_.assign(role_.size(), std::size_t(-1));
+    for(std::size_t v = 0; v < role_.size(); ++v)   // open curves, from their ends
+      if(role_[v] != Sliding_role::CURVE)
+        for(std::size_t u : ends[v])
+          if(!walked.count({std::min(u, v), std::max(u, v)})) walk(v, u);
+    for(std::size_t v = 0; v < role_.size(); ++v)   // closed curves
+      if(role_[v] == Sliding_role::CURVE && curve_of_[v] == std::size_t(-1)) walk(v, ends[v][0]);
+    for(std::size_t v = 0; v < role_.size(); ++v)
+      if(role_[v] == Sliding_role::CURVE && place_[v] + 1 >= curves_[curve_of_[v]].points.size()) place_[v] -= 1;
+  }
+
+  static Vector closest_on_segment(const Vector& a, const Vector& b, const Vector& x)
+  {
+    const Vector t = b - a;
+    const double length2 = t.squaredNorm();
+    if(!(length2 > 0)) return a;
+    return a + std::clamp((x - a).dot(t) / length2, 0., 1.) * t;
+  }
+
+  /// The closest point of v's curve to x, walking from the segment v was
+  /// last on to whichever neighbour is closer, and the curve's tangent there.
+  std::pair<Vector, Matrix> onto_curve(std::size_t v, const Vector& x)
+  {
+    const std::vector<Vector>& p = curves_[curve_of_[v]].points;
+    const std::size_t segments = p.size() - 1;
+    const bool closed = p.size() > 2 && p.front() == p.back();
+    const auto distance = [&](std::size_t i) { return (closest_on_segment(p[i], p[i + 1], x) - x).squaredNorm(); };
+    std::size_t at = std::min(place_[v], segments - 1);
+    double best = distance(at);
+    for(bool moved = true; moved;) {
+      moved = false;
+      for(const std::size_t next : {at + 1 < segments ? at + 1 : closed ? 0 : at, at > 0 ? at - 1 : closed ? segments - 1 : at}) {
+        if(next == at) continue;
+        const double to_next = distance(next);
+        if(to_next < best) { best = to_next; at = next; moved = true; break; }
+      }
+    }
+    place_[v] = at;
+    Vector t = p[at + 1] - p[at];
+    for(std::size_t step = 1; !(t.norm() > 0) && step < segments; ++step)   // (a segment of no length: its neighbour's)
+      t = p[(at + step) % segments + 1] - p[(at + step) % segments];
+    return {closest_on_segment(p[at], p[at + 1], x), line_projector<d>(Vector(t.normalized()))};
+  }
+
+  std::vector<Sliding_role> role_;
+  std::vector<std::size_t> place_;      // per sliding vertex: its triangle, or its segment on its curve
+  std::vector<std::size_t> curve_of_;   // per curve vertex: its curve
+  std::vector<Triangle> triangles_;
+  std::vector<std::size_t> triangles_at_, triangle_around_;   // the triangles around each vertex (compressed rows)
+  std::vector<Curve> curves_;
+  double diagonal_ = 0;
+  double min_cos_;
+};
+
+} // namespace internal
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H

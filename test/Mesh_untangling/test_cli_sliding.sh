@@ -1,0 +1,182 @@
+#!/usr/bin/env bash
+# --slide-boundary (issue 36, item 1).  On make_tangled_mesh's grids of the
+# unit square and cube (hexahedra, tetrahedra, quadrilaterals, triangles)
+# whose boundary vertices were moved along their faces and edges far enough
+# to fold the boundary facets over, the fixed boundary cannot be untangled
+# and the sliding one is: every face vertex keeps its face's coordinate,
+# every edge vertex its edge's two, the corners theirs bit for bit, and the
+# report counts them (surfaces, curves, corners) and gives a distance to the
+# target below 1e-12.  On the data of ../shared (a CuboidBlocks hexahedral
+# mesh whose fixed boundary leaves an inverted cell, and a real hexahedral
+# mesh from a published pipeline), every boundary vertex of the result is
+# within 1e-9 of the diagonal from the input's boundary surface.  Bad
+# options are refused with the reason.
+# usage: test_cli_sliding.sh UNTANGLE_MESH MAKE_TANGLED_MESH MAKE_BLOCK_HEX_MESH [DATA_DIR]
+set -u
+. "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_sliding "$@"
+MAKE_BLOCK=$(absolute "$4")
+DATA=${5:-}
+
+json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
+: > none.txt
+
+# fold IN OUT: IN's boundary vertices on [0, 1]^D moved along their faces
+# (edges, sides) by up to 0.9 grid cells, so that boundary facets fold
+# over; the interior left as tangled as it is; the file's fixed flags dropped
+fold() {
+  python3 - "$@" << 'EOF'
+import random, sys
+path, out = sys.argv[1], sys.argv[2]
+lines = open(path).read().split('\n')
+i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
+count = int(lines[i].split()[1])
+points = [list(map(float, lines[i + 1 + k].split())) for k in range(count)]
+dims = 2 if all(p[2] == 0 for p in points) else 3
+n = round(1 / min(p[0] for p in points if p[0] > 0))
+random.seed(11)
+for p in points:
+    on = [c for c in range(dims) if p[c] in (0.0, 1.0)]
+    if not on or len(on) == dims:
+        continue   # interior or corner
+    for c in range(dims):
+        if c not in on:
+            p[c] = min(max(p[c] + 0.9 / n * random.choice((-1, 1)), 0.1 / n), 1 - 0.1 / n)
+for k in range(count):
+    lines[i + 1 + k] = ' '.join(repr(c) for c in points[k])
+end = next((k for k, l in enumerate(lines) if l.startswith('POINT_DATA')), len(lines))
+open(out, 'w').write('\n'.join(lines[:end]) + '\n')
+EOF
+}
+# on_faces IN OUT: every coordinate of an IN vertex at 0 or 1 is in OUT within 1e-12, corners bit for bit
+on_faces() {
+  python3 - "$@" << 'EOF'
+import sys
+def points(path):
+    lines = open(path).read().split('\n')
+    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
+    return [list(map(float, lines[i + 1 + k].split())) for k in range(int(lines[i].split()[1]))]
+a, b = points(sys.argv[1]), points(sys.argv[2])
+dims = 2 if all(p[2] == 0 for p in a) else 3
+bad = 0
+for p, q in zip(a, b):
+    on = [c for c in range(dims) if p[c] in (0.0, 1.0)]
+    if len(on) == dims and p != q: bad += 1
+    bad += sum(abs(p[c] - q[c]) > 1e-12 for c in on)
+sys.exit(1 if bad else 0)
+EOF
+}
+# near_boundary IN OUT TOLERANCE: every vertex on IN's boundary surface ends within
+# TOLERANCE times IN's bounding box diagonal of it (hexahedra)
+near_boundary() {
+  /usr/bin/python3 - "$@" << 'EOF'
+import sys
+from collections import Counter
+import numpy as np
+def read(path):
+    lines = open(path).read().split('\n')
+    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
+    p = np.array([list(map(float, lines[i + 1 + k].split())) for k in range(int(lines[i].split()[1]))])
+    j = next(k for k, l in enumerate(lines) if l.startswith('CELLS'))
+    cells = [list(map(int, l.split()[1:])) for l in lines[j + 1:j + 1 + int(lines[j].split()[1])]]
+    return p, cells
+a, cells = read(sys.argv[1])
+b, _ = read(sys.argv[2])
+faces = [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+count = Counter(tuple(sorted(c[v] for v in f)) for c in cells for f in faces)
+quads = [[c[v] for v in f] for c in cells for f in faces if count[tuple(sorted(c[v] for v in f))] == 1]
+tri = np.array([[q[0], q[1], q[2]] for q in quads] + [[q[0], q[2], q[3]] for q in quads])
+A, B, C = a[tri[:, 0]], a[tri[:, 1]], a[tri[:, 2]]
+def segment(p, P, Q):
+    t = np.clip(np.einsum('ij,ij->i', p - P, Q - P) / np.maximum(np.einsum('ij,ij->i', Q - P, Q - P), 1e-300), 0, 1)
+    return np.linalg.norm(P + t[:, None] * (Q - P) - p, axis=1)
+def distance(p):
+    n = np.cross(B - A, C - A)
+    nn = np.einsum('ij,ij->i', n, n)
+    ok = nn > 1e-300
+    h = np.where(ok, np.einsum('ij,ij->i', p - A, n) / np.where(ok, nn, 1), 0)
+    f = p - h[:, None] * n   # the foot on each plane
+    inside = ok.copy()
+    for P, Q in ((A, B), (B, C), (C, A)):
+        inside &= np.einsum('ij,ij->i', np.cross(Q - P, f - P), n) >= 0
+    d = np.where(inside, np.abs(h) * np.sqrt(nn), np.inf)
+    return min(d.min(), segment(p, A, B).min(), segment(p, B, C).min(), segment(p, C, A).min())
+tolerance = float(sys.argv[3]) * np.linalg.norm(a.max(axis=0) - a.min(axis=0))
+worst = max(distance(b[v]) for v in sorted({v for q in quads for v in q}))
+print('farthest boundary vertex from the input boundary:', worst)
+sys.exit(0 if worst <= tolerance else 1)
+EOF
+}
+
+for kind in hexcube cube quadsquare square; do
+  "$MAKE" $kind 4 0.6 1 $kind.vtk > /dev/null
+  fold $kind.vtk $kind-folded.vtk
+  rc=0
+  "$UNTANGLE" $kind-folded.vtk --rest $kind-rest.vtk --fix-boundary -o $kind-fixed.vtk --threads 1 --quiet --time-limit 20 2> /dev/null || rc=$?
+  check "$kind: the folded boundary fixed is not untangled (exit $rc)" test $rc -ne 0
+  rc=0
+  "$UNTANGLE" $kind-folded.vtk --rest $kind-rest.vtk --slide-boundary -o $kind-out.vtk --report $kind.json --threads 1 \
+    --quiet 2> $kind.err || rc=$?
+  check "$kind: sliding, exit 0 ($rc: $(cat $kind.err))" test $rc -eq 0
+  check "$kind: locally invertible" test "$(json $kind.json locally_invertible)" = True
+  check "$kind: every vertex on its face, edge or corner" on_faces $kind.vtk $kind-out.vtk
+  case $kind in
+    hexcube | cube) surfaces=54 curves=36 corners=8 ;;
+    *) surfaces=0 curves=12 corners=4 ;;
+  esac
+  check "$kind: $surfaces vertices on surfaces" test "$(json $kind.json vertices_sliding_on_surfaces)" = $surfaces
+  check "$kind: $curves on curves" test "$(json $kind.json vertices_sliding_on_curves)" = $curves
+  check "$kind: $corners corners held" test "$(json $kind.json corner_vertices_held)" = $corners
+  check "$kind: on the target" python3 -c "import json; import sys; sys.exit(0 if 0 <= json.load(open('$kind.json'))['max_distance_to_target'] <= 1e-12 else 1)"
+done
+check "the summary tells the sliding boundary" grep -q "^sliding boundary: 54 vertices on surface patches, 36 on feature curves, 8 corners held" <(
+  "$UNTANGLE" hexcube-folded.vtk --rest hexcube-rest.vtk --slide-boundary -o again.vtk --threads 1 2>&1)
+
+# a fixed vertex stays fixed: the file's flags (every boundary vertex) leave nothing to slide
+"$MAKE" hexcube 3 0.6 1 small.vtk > /dev/null
+"$UNTANGLE" small.vtk --rest small-rest.vtk --slide-boundary -o small-out.vtk --report small.json --quiet --threads 1 2> /dev/null
+check "fixed vertices do not slide" test "$(json small.json vertices_sliding_on_surfaces)/$(json small.json vertices_sliding_on_curves)" = 0/0
+check "with the option the distance is a number" test "$(python3 -c "import json; print(json.load(open('hexcube.json'))['max_distance_to_target'] is None)")" = False
+"$UNTANGLE" small.vtk --rest small-rest.vtk -o plain.vtk --report plain.json --quiet --threads 1 2> /dev/null
+check "without the option the report's distance is null" test "$(json plain.json max_distance_to_target)" = None
+
+# bad options
+refused() {   # refused EXIT PHRASE ARGS...: the run exits EXIT and says PHRASE
+  local code=$1 phrase=$2 rc=0
+  shift 2
+  "$UNTANGLE" "$@" > out.txt 2>&1 || rc=$?
+  [ $rc -eq "$code" ] && grep -q -- "$phrase" out.txt
+}
+check "--feature-angle needs --slide-boundary" refused 2 "requires --slide-boundary" small.vtk --feature-angle 20 -o x.vtk
+check "--feature-angle 0 is refused" refused 2 "feature-angle" small.vtk --slide-boundary --feature-angle 0 -o x.vtk
+check "--feature-angle 120 is refused" refused 2 "feature-angle" small.vtk --slide-boundary --feature-angle 120 -o x.vtk
+check "--slide-boundary excludes --fix-boundary" refused 2 "excludes" small.vtk --slide-boundary --fix-boundary -o x.vtk
+"$MAKE" cube 3 0.6 1 tets.vtk > /dev/null
+check "--slide-boundary with --refine is refused" refused 2 "refinement is not offered with a sliding boundary" \
+  tets.vtk --rest tets-rest.vtk --slide-boundary --refine -o x.vtk
+"$MAKE" torus 6 0.3 1 torus.obj > /dev/null
+check "a seamless map refuses --slide-boundary" refused 2 "not offered for seamless" torus.obj --slide-boundary -o x.obj
+check "no output was written by a refused run" test ! -e x.vtk -a ! -e x.obj
+
+if [ -n "$DATA" ] && [ -d "$DATA/cuboidblocks/rockerarm.hexex_block291" ]; then
+  # CuboidBlocks: its boundary fixed leaves a cell inverted (issue 36); sliding, none
+  "$MAKE_BLOCK" "$DATA/cuboidblocks/rockerarm.hexex_block291" 8 block.vtk > /dev/null
+  rc=0
+  "$UNTANGLE" block.vtk --rest block-rest.vtk -o block-fixed.vtk --threads 1 --quiet --time-limit 30 2> /dev/null || rc=$?
+  check "block 291 with its boundary fixed is not untangled (exit $rc)" test $rc -ne 0
+  rc=0
+  "$UNTANGLE" block.vtk --rest block-rest.vtk --slide-boundary --fixed none.txt -o block-out.vtk --report block.json \
+    --threads 1 --quiet --time-limit 60 2> block.err || rc=$?
+  check "block 291 sliding: exit 0 ($rc: $(cat block.err))" test $rc -eq 0
+  check "block 291: on the input's boundary" near_boundary block.vtk block-out.vtk 1e-9
+fi
+if [ -n "$DATA" ] && [ -f "$DATA/hex/fandisk-input.vtk" ]; then
+  rc=0
+  "$UNTANGLE" "$DATA/hex/fandisk-input.vtk" --slide-boundary --fixed none.txt -o fandisk-out.vtk --report fandisk.json --threads 1 \
+    --quiet --time-limit 60 2> fandisk.err || rc=$?
+  check "fandisk sliding: exit 0 ($rc: $(cat fandisk.err))" test $rc -eq 0
+  check "fandisk: every cell positive" test "$(json fandisk.json inverted_after)" = 0
+  check "fandisk: on the input's boundary" near_boundary "$DATA/hex/fandisk-input.vtk" fandisk-out.vtk 1e-9
+fi
+
+echo "$checks checks, $failures failures"
+[ "$failures" -eq 0 ]
