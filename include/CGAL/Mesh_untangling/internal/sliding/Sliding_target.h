@@ -18,16 +18,24 @@
 // A vertex is projected onto the closest point of its own patch (the
 // patch's triangles, a quadrilateral split in two) or of its own curve,
 // never onto another: a vertex near a sharp edge does not jump across it.
-// The closest point is found by a walk from the triangle or segment the
-// vertex was last projected on to a closer neighbour while there is one: the
-// solvers project after every step, which moves a vertex little, and a
-// search of the whole patch (an AABB tree) took half of a run's time (kitty,
-// 7,083 hexahedra).  The walk keeps a vertex on its own sheet where a patch
-// comes back close to itself.
+// After every step of a solver, the closest point is found by a walk from
+// the triangle or segment the vertex was last projected on to a closer
+// neighbour while there is one: a step moves a vertex little, and a search
+// of the whole patch (an AABB tree) after every step took half of a run's
+// time (kitty, 7,083 hexahedra: 14.7 s, with the walk 5.7 s).  Where the
+// tangents are taken anew (at each inner solve, and between rounds), the
+// whole patch is searched first: a walk alone ends in a local minimum of the
+// distance where the tangled input's patch folds over itself, and left one
+// CuboidBlocks block (armadillo 216) tangled that the search untangles.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
 
 #include <CGAL/Mesh_untangling/internal/sliding/Sliding_vertices.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <Eigen/Dense>
 
@@ -85,7 +93,7 @@ public:
   double project(std::vector<Vector>& positions, Sliding_vertices<d>& sliding)
   {
     const bool first = sliding.empty();
-    return project_each([&](std::size_t v) { return positions[v]; },
+    return project_each(true, [&](std::size_t v) { return positions[v]; },
                         [&](std::size_t v, const Vector& point, const Matrix& tangent) {
                           positions[v] = point;
                           if(first) sliding.add(v, role_.size(), tangent);
@@ -98,7 +106,7 @@ public:
   /// Sliding_vertices numbers them) when it is given.
   void project(double* x, const Vector& center, double scale, const std::vector<int>& slot, std::vector<Matrix>* tangent)
   {
-    project_each([&](std::size_t v) { return Vector(center + scale * Eigen::Map<const Vector>(x + d * v)); },
+    project_each(tangent != nullptr, [&](std::size_t v) { return Vector(center + scale * Eigen::Map<const Vector>(x + d * v)); },
                  [&](std::size_t v, const Vector& point, const Matrix& T) {
                    Eigen::Map<Vector>(x + d * v) = (point - center) / scale;
                    if(tangent) (*tangent)[std::size_t(slot[v])] = T;
@@ -112,7 +120,7 @@ public:
     double largest = 0;
     for(std::size_t v = 0; v < role_.size(); ++v) {
       if(!slides(v)) continue;
-      const Vector point = role_[v] == Sliding_role::CURVE ? onto_curve(v, positions[v]).first : onto_patch(v, positions[v]).first;
+      const Vector point = role_[v] == Sliding_role::CURVE ? onto_curve(v, positions[v]).first : onto_patch(v, positions[v], true).first;
       largest = std::max(largest, (point - positions[v]).norm());
     }
     place_ = hints;
@@ -122,15 +130,17 @@ public:
 private:
   using Edge = std::array<std::size_t, 2>;
 
-  /// For every sliding vertex v at `position(v)`: `moved(v, closest point, tangent)`; returns the largest distance.
+  /// For every sliding vertex v at `position(v)`: `moved(v, closest point,
+  /// tangent)`; returns the largest distance.  `search`: a surface vertex's
+  /// closest point is sought on its whole patch first.
   template <class Position, class Moved>
-  double project_each(const Position& position, const Moved& moved)
+  double project_each(bool search, const Position& position, const Moved& moved)
   {
     double largest = 0;
     for(std::size_t v = 0; v < role_.size(); ++v) {
       if(!slides(v)) continue;
       const Vector p = position(v);
-      const auto [point, tangent] = role_[v] == Sliding_role::CURVE ? onto_curve(v, p) : onto_patch(v, p);
+      const auto [point, tangent] = role_[v] == Sliding_role::CURVE ? onto_curve(v, p) : onto_patch(v, p, search);
       largest = std::max(largest, (point - p).norm());
       moved(v, point, tangent);
     }
@@ -209,7 +219,16 @@ private:
   }
 
   // --- Surface patches (3D): triangles (a quadrilateral split in two),
-  // each with its patch, and the triangles around each vertex.
+  // each with its patch, the triangles around each vertex, and an AABB tree
+  // of each patch's triangles.
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Kernel_triangles = std::vector<Kernel::Triangle_3>;
+  struct Patch_tree
+  {
+    Kernel_triangles triangles;
+    std::vector<std::size_t> triangle;   // of each, in triangles_
+    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, typename Kernel_triangles::const_iterator>>> tree;
+  };
   struct Triangle
   {
     std::array<std::size_t, 3> vertex;
@@ -255,6 +274,19 @@ private:
     std::vector<std::size_t> fill(triangles_at_.begin(), triangles_at_.end() - 1);
     for(std::size_t t = 0; t < triangles_.size(); ++t)
       for(std::size_t v : triangles_[t].vertex) triangle_around_[fill[v]++] = t;
+    trees_.resize(facets.size());
+    for(std::size_t t = 0; t < triangles_.size(); ++t) {
+      auto& tree = trees_[triangles_[t].patch];
+      if(!tree) tree = std::make_unique<Patch_tree>();
+      const auto point = [&](int i) { const Vector& p = triangles_[t].point[std::size_t(i)]; return Kernel::Point_3(p[0], p[1], p[2]); };
+      tree->triangles.emplace_back(point(0), point(1), point(2));
+      tree->triangle.push_back(t);
+    }
+    for(auto& tree : trees_)
+      if(tree) {
+        tree->tree.insert(tree->triangles.begin(), tree->triangles.end());
+        tree->tree.accelerate_distance_queries();
+      }
     for(std::size_t v = 0; v < role_.size(); ++v) {
       if(role_[v] != Sliding_role::SURFACE) continue;
       if(triangles_at_[v] < triangles_at_[v + 1]) place_[v] = triangle_around_[triangles_at_[v]];
@@ -296,9 +328,14 @@ private:
   /// The closest point of v's patch to x, walking from the triangle v was
   /// last on to whichever triangle around one of its vertices, in the same
   /// patch, is closer, and the patch's tangent plane there.
-  std::pair<Vector, Matrix> onto_patch(std::size_t v, const Vector& x)
+  std::pair<Vector, Matrix> onto_patch(std::size_t v, const Vector& x, bool search)
   {
     if constexpr(d == 3) {
+      if(search) {   // (from the closest triangle of the whole patch)
+        const Patch_tree& tree = *trees_[triangles_[place_[v]].patch];
+        const auto closest = tree.tree.closest_point_and_primitive(Kernel::Point_3(x[0], x[1], x[2]));
+        place_[v] = tree.triangle[std::size_t(closest.second - tree.triangles.begin())];
+      }
       std::size_t at = place_[v];
       Vector best = closest_on_triangle(at, x);
       double distance = (best - x).squaredNorm();
@@ -398,6 +435,7 @@ private:
   std::vector<std::size_t> place_;      // per sliding vertex: its triangle, or its segment on its curve
   std::vector<std::size_t> curve_of_;   // per curve vertex: its curve
   std::vector<Triangle> triangles_;
+  std::vector<std::unique_ptr<Patch_tree>> trees_;   // per patch (by its root facet)
   std::vector<std::size_t> triangles_at_, triangle_around_;   // the triangles around each vertex (compressed rows)
   std::vector<Curve> curves_;
   double diagonal_ = 0;
