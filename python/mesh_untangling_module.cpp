@@ -15,6 +15,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/version.h>
 
 #include <pybind11/functional.h>
@@ -376,7 +377,7 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
     options.regular_targets = choice<bool>(*t, "targets", {{"rest", false}, {"regular", true}});
   if(!theta.is_none()) {
     const double value = number<double>(theta, "theta", "a number");
-    if(!(value >= 0 && value <= 1)) throw py::value_error("theta must be in [0, 1], not " + std::to_string(value));
+    if(const std::string refused = MU::internal::theta_refusal(value); !refused.empty()) throw py::value_error(refused);
     options.theta = value;
   }
   const auto whole_number = [](const py::handle& h, const char* name) {
@@ -400,8 +401,8 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
     throw py::value_error("optimize_quality=True is not offered for seamless maps");
   options.sliding_boundary = slide_boundary;
   options.feature_angle = feature_angle;
-  if(!(feature_angle > 0 && feature_angle <= 90))
-    throw py::value_error("feature_angle must be in (0, 90] degrees, not " + std::to_string(feature_angle));
+  if(const std::string refused = MU::internal::feature_angle_refusal(feature_angle); !refused.empty())
+    throw py::value_error(refused);
   if(slide_boundary && mesh.has_corner_map())
     throw py::value_error("slide_boundary=True is not offered for seamless maps");
   if(refine && (mesh.cell_size != 0 || mesh.has_corner_map()))

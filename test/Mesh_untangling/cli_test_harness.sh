@@ -11,6 +11,9 @@ if [ $# -lt 3 ] || [ ! -x "$2" ] || [ ! -x "$3" ]; then
   exit 2
 fi
 absolute() { case $1 in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
+# (the tests' Python helpers, legacy_vtk.py)
+PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
+export PYTHONPATH
 UNTANGLE=$(absolute "$2")
 MAKE=$(absolute "$3")
 

@@ -24,13 +24,10 @@ poor() {
   python3 - "$@" << 'EOF'
 import random, sys
 from collections import Counter
+import legacy_vtk
 path, out, amplitude, n = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
-lines = open(path).read().split('\n')
-i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-count = int(lines[i].split()[1])
-points = [list(map(float, lines[i + 1 + k].split())) for k in range(count)]
-j = next(k for k, l in enumerate(lines) if l.startswith('CELLS'))
-cells = [list(map(int, l.split()[1:])) for l in lines[j + 1:j + 1 + int(lines[j].split()[1])]]
+lines, i, points = legacy_vtk.read(path)
+cells = legacy_vtk.cells(lines)
 faces = {3: [(0, 1), (1, 2), (2, 0)], 4: [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)],
          8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]}
 if len(cells[0]) == 4 and all(p[2] == 0 for p in points):
@@ -43,9 +40,7 @@ for v, p in enumerate(points):
     if v not in boundary:
         for c in range(2 if flat else 3):
             p[c] += amplitude / n * random.uniform(-1, 1)
-for k in range(count):
-    lines[i + 1 + k] = ' '.join(repr(c) for c in points[k])
-open(out, 'w').write('\n'.join(lines))
+open(out, 'w').write('\n'.join(legacy_vtk.with_points(lines, i, points)))
 EOF
 }
 # same_boundary IN OUT N D: the points of IN on the boundary of [0, 1]^D (make_tangled_mesh's
@@ -53,10 +48,7 @@ EOF
 same_boundary() {
   python3 - "$@" << 'EOF'
 import sys
-def points(path):
-    lines = open(path).read().split('\n')
-    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-    return [tuple(map(float, lines[i + 1 + k].split())) for k in range(int(lines[i].split()[1]))]
+from legacy_vtk import points
 a, b = points(sys.argv[1]), points(sys.argv[2])
 n = int(sys.argv[3])
 on_boundary = [v for v, p in enumerate(a) if any(c in (0.0, 1.0) for c in p[:int(sys.argv[4])])]

@@ -26,11 +26,9 @@ json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.arg
 fold() {
   python3 - "$@" << 'EOF'
 import random, sys
+import legacy_vtk
 path, out = sys.argv[1], sys.argv[2]
-lines = open(path).read().split('\n')
-i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-count = int(lines[i].split()[1])
-points = [list(map(float, lines[i + 1 + k].split())) for k in range(count)]
+lines, i, points = legacy_vtk.read(path)
 dims = 2 if all(p[2] == 0 for p in points) else 3
 n = round(1 / min(p[0] for p in points if p[0] > 0))
 random.seed(11)
@@ -41,8 +39,7 @@ for p in points:
     for c in range(dims):
         if c not in on:
             p[c] = min(max(p[c] + 0.9 / n * random.choice((-1, 1)), 0.1 / n), 1 - 0.1 / n)
-for k in range(count):
-    lines[i + 1 + k] = ' '.join(repr(c) for c in points[k])
+lines = legacy_vtk.with_points(lines, i, points)
 end = next((k for k, l in enumerate(lines) if l.startswith('POINT_DATA')), len(lines))
 open(out, 'w').write('\n'.join(lines[:end]) + '\n')
 EOF
@@ -51,10 +48,7 @@ EOF
 on_faces() {
   python3 - "$@" << 'EOF'
 import sys
-def points(path):
-    lines = open(path).read().split('\n')
-    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-    return [list(map(float, lines[i + 1 + k].split())) for k in range(int(lines[i].split()[1]))]
+from legacy_vtk import points
 a, b = points(sys.argv[1]), points(sys.argv[2])
 dims = 2 if all(p[2] == 0 for p in a) else 3
 bad = 0
@@ -72,15 +66,10 @@ near_boundary() {
 import sys
 from collections import Counter
 import numpy as np
-def read(path):
-    lines = open(path).read().split('\n')
-    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-    p = np.array([list(map(float, lines[i + 1 + k].split())) for k in range(int(lines[i].split()[1]))])
-    j = next(k for k, l in enumerate(lines) if l.startswith('CELLS'))
-    cells = [list(map(int, l.split()[1:])) for l in lines[j + 1:j + 1 + int(lines[j].split()[1])]]
-    return p, cells
-a, cells = read(sys.argv[1])
-b, _ = read(sys.argv[2])
+import legacy_vtk
+lines, _, a = legacy_vtk.read(sys.argv[1])
+a, cells = np.array(a), legacy_vtk.cells(lines)
+b = np.array(legacy_vtk.points(sys.argv[2]))
 faces = [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
 count = Counter(tuple(sorted(c[v] for v in f)) for c in cells for f in faces)
 quads = [[c[v] for v in f] for c in cells for f in faces if count[tuple(sorted(c[v] for v in f))] == 1]

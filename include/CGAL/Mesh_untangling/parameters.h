@@ -246,9 +246,10 @@ CGAL_MESH_UNTANGLING_PARAMETER(optimize_quality, mesh_untangling_optimize_qualit
 /// slides on their curve, one on no feature edge on its surface patch (the
 /// facets it reaches without crossing a feature edge), and any other, where
 /// curves meet or end, stays where it is.  Each vertex stays on its target
-/// in the result (it moves in its tangent plane or line, and is projected
-/// back onto the target between runs until a projection moves nothing
-/// farther than 1e-9 of the boundary's bounding box diagonal);
+/// in the result: a solver moves it in its tangent plane or line and back
+/// to the closest point of its own patch or curve after every trial step;
+/// the map is projected once more before the verdict, and climbs again from
+/// the projected map when that left it tangled (8 rounds at most);
 /// `Untangling_result::max_distance_to_target` says how far the farthest
 /// ended.  In 2D the boundary slides on its polyline, corners beyond the
 /// feature angle staying.  Not for seamless maps, nor with refinement or

@@ -517,6 +517,7 @@ class BadInput(unittest.TestCase):
         self.refused(ValueError, "targets='ideal'", *args, targets="ideal")
         self.refused(ValueError, r"theta must be in \[0, 1\]", *args, theta=2)
         self.refused(ValueError, "theta must be in", *args, theta=float("nan"))
+        self.refused(ValueError, "feature_angle must be in", *args, slide_boundary=True, feature_angle=float("nan"))
         self.refused(ValueError, "threads must be 1 or more, not 0", *args, threads=0)
         self.refused(ValueError, "max_iterations must be 1 or more", *args, max_iterations=-3)
         self.refused(ValueError, "time_limit must be a number of seconds", *args, time_limit=-1)

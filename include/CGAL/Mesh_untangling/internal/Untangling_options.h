@@ -63,6 +63,20 @@ struct Untangling_options
   std::string invalid_parameter;
 };
 
+/// Why a theta is refused, in words; empty when it is in [0, 1].  (The
+/// named parameters and the Python module ask the same.)
+inline std::string theta_refusal(double theta)
+{
+  return theta >= 0 && theta <= 1 ? std::string() : "theta must be in [0, 1], not " + std::to_string(theta);
+}
+
+/// Why a feature angle (degrees) is refused, in words; empty when it is in (0, 90].
+inline std::string feature_angle_refusal(double degrees)
+{
+  return degrees > 0 && degrees <= 90 ? std::string()
+                                      : "feature_angle must be in (0, 90] degrees, not " + std::to_string(degrees);
+}
+
 /// The moment `seconds` from now (never, for an infinite or huge number).
 inline std::chrono::steady_clock::time_point deadline_after(double seconds)
 {

@@ -63,13 +63,11 @@ Untangling_options read_options(const NamedParameters& np)
   o.optimize_quality = choose_parameter(get_parameter(np, internal_np::mesh_untangling_optimize_quality), false);
   o.sliding_boundary = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   o.feature_angle = choose_parameter(get_parameter(np, internal_np::mesh_untangling_feature_angle), 35.);
-  if(!(o.feature_angle > 0 && o.feature_angle <= 90))
-    o.invalid_parameter = "feature_angle must be in (0, 90] degrees, not " + std::to_string(o.feature_angle);
+  if(const std::string refused = feature_angle_refusal(o.feature_angle); !refused.empty()) o.invalid_parameter = refused;
   if(o.refinement_budget == 0)
     o.invalid_parameter = "refinement_budget must be at least 1 vertex, not 0";
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())
-    if(!(o.theta >= 0 && o.theta <= 1))
-      o.invalid_parameter = "theta must be in [0, 1], not " + std::to_string(o.theta);
+    if(const std::string refused = theta_refusal(o.theta); !refused.empty()) o.invalid_parameter = refused;
   if(std::isnan(o.max_seconds) || o.max_seconds < 0)
     o.invalid_parameter = "maximum_running_time must be a number of seconds >= 0, not " + std::to_string(o.max_seconds);
   return o;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -128,40 +129,65 @@ constexpr int quadrilateral_edges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
 constexpr int hexahedron_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                         {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
-/// The boundary vertices of a mesh of cells given by their corner simplices
-/// (Untangling_input::corners_per_cell = K): vertices of the cell facets
-/// (quadrilateral edges, hexahedron faces) that belong to one cell only.
+/// The facets that `each_facet(add)` lists (`add(facet)` each, with N
+/// vertices in cyclic order) that are listed once: the boundary facets of
+/// the elements they were listed from, as listed, in the lexicographic
+/// order of their sorted vertices.
+template <std::size_t N, class Each_facet>
+std::vector<std::array<std::size_t, N>> unshared_facets(const Each_facet& each_facet)
+{
+  using Facet = std::array<std::size_t, N>;
+  std::vector<std::pair<Facet, Facet>> facets;   // (sorted, as listed)
+  each_facet([&facets](const Facet& listed) {
+    Facet sorted = listed;
+    std::sort(sorted.begin(), sorted.end());
+    facets.emplace_back(sorted, listed);
+  });
+  std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Facet> unshared;
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i;
+    while(j < facets.size() && facets[j].first == facets[i].first) ++j;
+    if(j - i == 1) unshared.push_back(facets[i].second);
+    i = j;
+  }
+  return unshared;
+}
+
+/// The boundary facets of a mesh of cells given by their corner simplices
+/// (Untangling_input::corners_per_cell = K): the cell facets (quadrilateral
+/// edges, hexahedron faces, in cyclic order) that belong to one cell only.
 /// The corners' own facets cannot tell: within one cell each quadrilateral
 /// edge is in two corner triangles, as are its diagonals.  Corner i of a
 /// cell has the cell's vertex i first; hexahedra are in VTK's order.
 template <int d>
+std::vector<std::array<std::size_t, d == 2 ? 2 : 4>>
+cell_boundary_facets(const std::vector<std::array<std::size_t, d + 1>>& elements, std::size_t number_of_elements,
+                     std::size_t corners_per_cell)
+{
+  constexpr std::size_t facet_size = d == 2 ? 2 : 4;
+  const std::size_t K = corners_per_cell, cells = std::min(number_of_elements, elements.size()) / K;
+  return unshared_facets<facet_size>([&](const auto& add) {
+    for(std::size_t c = 0; c < cells; ++c) {
+      const auto vertex = [&](int i) { return elements[K * c + std::size_t(i)][0]; };
+      for(int f = 0; f < (d == 2 ? 4 : 6); ++f) {
+        std::array<std::size_t, facet_size> facet;
+        for(std::size_t i = 0; i < facet_size; ++i)
+          facet[i] = vertex(d == 2 ? quadrilateral_edges[f][i] : hexahedron_faces[f][i]);
+        add(facet);
+      }
+    }
+  });
+}
+
+/// The boundary vertices of a mesh of cells (cell_boundary_facets()).
+template <int d>
 std::vector<char> cell_boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements,
                                          std::size_t number_of_elements, std::size_t corners_per_cell)
 {
-  constexpr std::size_t facet_size = d == 2 ? 2 : 4;
-  using Facet = std::array<std::size_t, facet_size>;
-  const std::size_t K = corners_per_cell, cells = std::min(number_of_elements, elements.size()) / K;
-  std::vector<Facet> facets;
-  facets.reserve(cells * (d == 2 ? 4 : 6));
-  for(std::size_t c = 0; c < cells; ++c) {
-    const auto vertex = [&](int i) { return elements[K * c + std::size_t(i)][0]; };
-    for(int f = 0; f < (d == 2 ? 4 : 6); ++f) {
-      Facet facet;
-      for(std::size_t i = 0; i < facet_size; ++i)
-        facet[i] = vertex(d == 2 ? quadrilateral_edges[f][i] : hexahedron_faces[f][i]);
-      std::sort(facet.begin(), facet.end());
-      facets.push_back(facet);
-    }
-  }
-  std::sort(facets.begin(), facets.end());
   std::vector<char> on_boundary(n, 0);
-  for(std::size_t i = 0; i < facets.size();) {
-    std::size_t j = i;
-    while(j < facets.size() && facets[j] == facets[i]) ++j;
-    if(j - i == 1)
-      for(std::size_t v : facets[i]) on_boundary[v] = 1;
-    i = j;
-  }
+  for(const auto& facet : cell_boundary_facets<d>(elements, number_of_elements, corners_per_cell))
+    for(std::size_t v : facet) on_boundary[v] = 1;
   return on_boundary;
 }
 

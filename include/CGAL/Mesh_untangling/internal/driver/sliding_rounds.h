@@ -43,48 +43,27 @@ namespace internal {
 constexpr int sliding_rounds = 8;
 
 /// The facets of the mesh part of `in` that belong to one element only,
-/// each in cyclic order: a simplex's facets, or for cells
-/// (Untangling_input::corners_per_cell) a quadrilateral's edges or a
-/// hexahedron's faces (cell c's vertex i is its corner i's first vertex).
+/// each in cyclic order: a simplex's facets, or for cells a quadrilateral's
+/// edges or a hexahedron's faces (cell_boundary_facets()).
 template <int d>
 std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>& in)
 {
-  using Facet = std::vector<std::size_t>;
-  std::vector<std::pair<Facet, Facet>> facets;   // (sorted, cyclic)
-  const auto add = [&facets](Facet cyclic) {
-    Facet sorted = cyclic;
-    std::sort(sorted.begin(), sorted.end());
-    facets.emplace_back(std::move(sorted), std::move(cyclic));
-  };
   const std::size_t m = in.number_of_mesh_elements();
-  if(in.has_cells()) {
-    const std::size_t K = in.corners_per_cell;
-    for(std::size_t c = 0; c < m / K; ++c) {
-      const auto vertex = [&](int i) { return in.elements[K * c + std::size_t(i)][0]; };
-      if constexpr(d == 2) {
-        for(const auto& e : quadrilateral_edges) add({vertex(e[0]), vertex(e[1])});
-      } else {
-        for(const auto& f : hexahedron_faces) add({vertex(f[0]), vertex(f[1]), vertex(f[2]), vertex(f[3])});
-      }
-    }
-  } else {
+  const auto as_vectors = [](const auto& facets) {
+    std::vector<std::vector<std::size_t>> boundary;
+    for(const auto& f : facets) boundary.emplace_back(f.begin(), f.end());
+    return boundary;
+  };
+  if(in.has_cells()) return as_vectors(cell_boundary_facets<d>(in.elements, m, in.corners_per_cell));
+  return as_vectors(unshared_facets<d>([&](const auto& add) {
     for(std::size_t k = 0; k < m; ++k)
       for(int skip = 0; skip <= d; ++skip) {
-        Facet f;
-        for(int i = 0; i <= d; ++i)
-          if(i != skip) f.push_back(in.elements[k][i]);
-        add(std::move(f));
+        std::array<std::size_t, d> f;
+        for(int i = 0, j = 0; i <= d; ++i)
+          if(i != skip) f[std::size_t(j++)] = in.elements[k][std::size_t(i)];
+        add(f);
       }
-  }
-  std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<Facet> boundary;
-  for(std::size_t i = 0; i < facets.size();) {
-    std::size_t j = i;
-    while(j < facets.size() && facets[j].first == facets[i].first) ++j;
-    if(j - i == 1) boundary.push_back(std::move(facets[i].second));
-    i = j;
-  }
-  return boundary;
+  }));
 }
 
 /// Makes the boundary of `in` (valid, without phantoms) slide on itself as

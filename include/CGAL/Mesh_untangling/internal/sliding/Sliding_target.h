@@ -76,9 +76,10 @@ public:
       for(std::size_t v : f) role_[v] = Sliding_role::SURFACE;
     measure_diagonal(positions);
     const std::vector<std::array<std::size_t, 2>> features = feature_edges(positions, facets);
-    classify(positions, features, is_fixed);
+    const std::vector<std::vector<std::size_t>> ends = feature_ends(features);
+    classify(positions, ends, is_fixed);
     if constexpr(d == 3) make_patches(positions, facets, features);
-    make_curves(positions, features);
+    make_curves(positions, ends);
   }
 
   Sliding_role role(std::size_t v) const { return role_[v]; }
@@ -117,12 +118,8 @@ public:
   double largest_distance(const std::vector<Vector>& positions)
   {
     const std::vector<std::size_t> hints = place_;   // (measuring leaves the walks where they were)
-    double largest = 0;
-    for(std::size_t v = 0; v < role_.size(); ++v) {
-      if(!slides(v)) continue;
-      const Vector point = role_[v] == Sliding_role::CURVE ? onto_curve(v, positions[v]).first : onto_patch(v, positions[v], true).first;
-      largest = std::max(largest, (point - positions[v]).norm());
-    }
+    const double largest = project_each(true, [&](std::size_t v) { return positions[v]; },
+                                        [](std::size_t, const Vector&, const Matrix&) {});
     place_ = hints;
     return largest;
   }
@@ -204,10 +201,17 @@ private:
     return features;
   }
 
-  void classify(const std::vector<Vector>& positions, const std::vector<Edge>& features, const std::vector<bool>& is_fixed)
+  /// Per vertex: the other ends of its feature edges.
+  std::vector<std::vector<std::size_t>> feature_ends(const std::vector<Edge>& features) const
   {
-    std::vector<std::vector<std::size_t>> ends(role_.size());   // per vertex: the other ends of its feature edges
+    std::vector<std::vector<std::size_t>> ends(role_.size());
     for(const Edge& e : features) { ends[e[0]].push_back(e[1]); ends[e[1]].push_back(e[0]); }
+    return ends;
+  }
+
+  void classify(const std::vector<Vector>& positions, const std::vector<std::vector<std::size_t>>& ends,
+                const std::vector<bool>& is_fixed)
+  {
     for(std::size_t v = 0; v < role_.size(); ++v) {
       if(role_[v] == Sliding_role::INTERIOR) continue;
       if(!is_fixed.empty() && is_fixed[v]) role_[v] = Sliding_role::FIXED;
@@ -364,10 +368,8 @@ private:
     std::vector<Vector> points;   // a closed curve repeats its first point last
   };
 
-  void make_curves(const std::vector<Vector>& positions, const std::vector<Edge>& features)
+  void make_curves(const std::vector<Vector>& positions, const std::vector<std::vector<std::size_t>>& ends)
   {
-    std::vector<std::vector<std::size_t>> ends(role_.size());
-    for(const Edge& e : features) { ends[e[0]].push_back(e[1]); ends[e[1]].push_back(e[0]); }
     std::map<Edge, bool> walked;
     const auto walk = [&](std::size_t from, std::size_t next) {
       Curve curve;
