@@ -43,6 +43,7 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   regular.phantom_vertices = in.phantom_vertices;
   regular.corners_per_cell = in.corners_per_cell;
   regular.links = in.links;
+  regular.sliding = in.sliding;   // (else the sliding vertices would be free boundary vertices here)
   for(std::size_t k = 0; k < in.elements.size(); ++k) {
     auto t = regular_simplex<d>();
     if(P.reference_orientation[k] < 0) std::swap(t[0], t[1]);
@@ -54,7 +55,8 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
 }
 
 /// Moves the free vertices of every non-positive element at random by up to
-/// a fifth of the element's longest edge (deterministic for a given `random`).
+/// a fifth of the element's longest edge (deterministic for a given `random`),
+/// sliding vertices back onto their targets.
 template <int d>
 void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
 {
@@ -72,6 +74,7 @@ void shake_non_positive_elements(Untangling_problem<d>& P, std::mt19937& random)
     if(reach[v] > 0 && !P.is_fixed[v])
       for(int c = 0; c < d; ++c) P.x[d * v + c] += reach[v] * unit(random);
   if(!P.links.empty()) apply_links<d>(P.links, P.x.data());   // (a linked vertex follows its representative)
+  P.retract(P.x.data());
 }
 
 /// A repair of the few elements that a stalled stage 1 leaves inverted

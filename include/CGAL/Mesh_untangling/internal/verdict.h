@@ -175,14 +175,14 @@ inline Untangling_status final_status(const Invertibility_report& report, bool n
 /// local repair, the refinement, the quality rung, a projection of sliding
 /// vertices): the exact verdict and the figures; the status is the
 /// verdict's when it found no defect a free vertex can repair, or when the
-/// runs' was a success that the map no longer has; else the runs'.
+/// runs' was a goal (reached_goal) that the map no longer has; else the runs'.
 template <int d>
 void describe_map(const Untangling_input<d>& in, const Untangling_options& options, Untangling_result& r)
 {
   const Untangling_problem<d> P = make_untangling_problem<d>(in, options.scaling);
   const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
   record_verdict(report, r);
-  if(report.has_no_repairable_defect() || report.inverted_elements == 0 || r.status == Untangling_status::SUCCESS) {
+  if(report.has_no_repairable_defect() || report.inverted_elements == 0 || reached_goal(r.status)) {
     r.status = final_status(report, false, false, false);
     r.message = r.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(report) : "";
   }
