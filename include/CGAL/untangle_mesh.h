@@ -455,6 +455,7 @@ untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
   const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_points);
+  const bool sliding = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   constexpr bool refines =
     Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_refinement_t>();
   static_assert(!refines || (std::is_lvalue_reference_v<SimplexRange> &&
@@ -470,7 +471,7 @@ untangle_simplex_soup(PointRange& points, SimplexRange&& simplices,
       return invalid;
     }
   }
-  auto input = Mesh_untangling::internal::make_soup_input<d>(points, simplices, fixed, rest);
+  auto input = Mesh_untangling::internal::make_soup_input<d>(points, simplices, fixed, rest, sliding);
   const auto identity = [](std::size_t i) { return i; };
   return Mesh_untangling::internal::untangle_as_parameters_ask<d, std::size_t, Point>(
     input, np, identity, identity,
@@ -560,6 +561,7 @@ untangle_cell_soup(PointRange& points, const CellRange& cells, const NamedParame
   constexpr int d = Ambient_dimension<Point>::value;
   const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                       Static_boolean_property_map<std::size_t, false>());
+  const bool sliding = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   constexpr bool has_rest =
     Mesh_untangling::internal::is_given_parameter<NamedParameters, internal_np::mesh_untangling_rest_points_t>();
   // the rest of quadrilaterals may be a 3D surface: its points are then not the map's
@@ -581,7 +583,7 @@ untangle_cell_soup(PointRange& points, const CellRange& cells, const NamedParame
     invalid.message = "the mesh has no cell";
     return invalid;
   }
-  auto input = Mesh_untangling::internal::make_cell_input<d>(points, corners, fixed);
+  auto input = Mesh_untangling::internal::make_cell_input<d>(points, corners, fixed, rest, sliding);
   const auto identity = [](std::size_t i) { return i; };
   Mesh_untangling::Untangling_result result = Mesh_untangling::internal::untangle_as_parameters_ask<d, std::size_t, Point>(
     input, np, identity, identity,

@@ -245,7 +245,11 @@ CGAL_MESH_UNTANGLING_PARAMETER(optimize_quality, mesh_untangling_optimize_qualit
 /// feature edge; a vertex on two feature edges that continue each other
 /// slides on their curve, one on no feature edge on its surface patch (the
 /// facets it reaches without crossing a feature edge), and any other, where
-/// curves meet or end, stays where it is.  Each vertex stays on its target
+/// curves meet or end, stays where it is.  When the rest shape is given in
+/// the map's dimension (`rest_points` of the soup functions), the feature
+/// edges are found on the rest's boundary, which a fold of the tangled map
+/// cannot cut with false features; the patches and curves are the map's
+/// boundary as given all the same.  Each vertex stays on its target
 /// in the result: a solver moves it in its tangent plane or line and back
 /// to the closest point of its own patch or curve after every trial step;
 /// the map is projected once more before the verdict, and climbs again from

@@ -62,7 +62,7 @@ std::vector<int> target_orientations(const PointRange& points, const SimplexRang
                                   " points");
   }
   const auto input =
-    internal::make_soup_input<d>(points, simplices, Static_boolean_property_map<std::size_t, false>(), rest);
+    internal::make_soup_input<d>(points, simplices, Static_boolean_property_map<std::size_t, false>(), rest, false);
   return internal::target_orientations<d>(input);
 }
 

@@ -63,6 +63,11 @@ struct Untangling_input
   // otherwise.  A sliding vertex is not a free boundary vertex: the target
   // keeps the boundary's shape.
   Sliding_vertices<d> sliding;
+  // The rest positions, when a sliding boundary is asked for and the rest
+  // is given in the map's dimension: its boundary, valid where the map's
+  // is folded, is where the sliding boundary finds its feature edges
+  // (slide_the_boundary()).  Empty otherwise.
+  std::vector<Vector> rest_shape;
 
   // The last `phantom_elements` elements and `phantom_vertices` positions are
   // phantoms (append_phantom_elements()): they shape the energy, but sizes,

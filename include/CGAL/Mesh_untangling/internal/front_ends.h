@@ -155,9 +155,23 @@ void write_back_tetrahedral(const Untangling_input<3>& in, TetrahedralComplex& t
       put(points, v, Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]));
 }
 
+/// The rest points `rest`, when they have the map's dimension d, as the
+/// input's rest shape (Untangling_input::rest_shape).
+template <int d, typename RestRange>
+void keep_rest_shape(const RestRange& rest, Untangling_input<d>& in)
+{
+  if constexpr(is_given<RestRange>()) {
+    using Rest_point = std::decay_t<decltype(*std::begin(rest))>;
+    if constexpr(Ambient_dimension<Rest_point>::value == d)
+      for(const auto& p : rest) in.rest_shape.push_back(to_vector<d>(p));
+  }
+}
+
+/// The input of a simplex soup; `sliding`: the boundary slides, so the
+/// rest, when given in the map's dimension, is kept as the rest shape.
 template <int d, typename PointRange, typename SimplexRange, typename FixedMap, typename RestRange>
 Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange& simplices,
-                                    const FixedMap& fixed, const RestRange& rest)
+                                    const FixedMap& fixed, const RestRange& rest, bool sliding)
 {
   Untangling_input<d> in;
   std::size_t v = 0;
@@ -165,6 +179,7 @@ Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange
     in.positions.push_back(to_vector<d>(p));
     in.is_fixed.push_back(get(fixed, v++));
   }
+  if(sliding) keep_rest_shape<d>(rest, in);
   const std::size_t n = in.positions.size();
   for(const auto& s : simplices) {
     std::array<std::size_t, d + 1> e;
@@ -188,9 +203,11 @@ Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange
 }
 
 /// The input of a cell soup: the points and fixed flags as a simplex soup's,
-/// the elements, targets and weights of its corner simplices (corner_simplices.h).
-template <int d, typename PointRange, typename Corners, typename FixedMap>
-Untangling_input<d> make_cell_input(const PointRange& points, const Corners& corners, const FixedMap& fixed)
+/// the elements, targets and weights of its corner simplices (corner_simplices.h),
+/// the rest shape as make_soup_input() keeps it.
+template <int d, typename PointRange, typename Corners, typename FixedMap, typename RestRange>
+Untangling_input<d> make_cell_input(const PointRange& points, const Corners& corners, const FixedMap& fixed,
+                                    const RestRange& rest, bool sliding)
 {
   Untangling_input<d> in;
   std::size_t v = 0;
@@ -198,6 +215,7 @@ Untangling_input<d> make_cell_input(const PointRange& points, const Corners& cor
     in.positions.push_back(to_vector<d>(p));
     in.is_fixed.push_back(get(fixed, v++));
   }
+  if(sliding) keep_rest_shape<d>(rest, in);
   in.elements = corners.simplices;
   in.targets.reserve(corners.targets.size());
   for(const auto& t : corners.targets) {

@@ -69,13 +69,18 @@ std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>&
 /// Makes the boundary of `in` (valid, without phantoms) slide on itself as
 /// `options` ask: the corners join the fixed vertices, every other boundary
 /// vertex slides with its tangent at its position (already on its target).
+/// The feature edges are found on the rest shape when `in` has one, where
+/// a fold of the tangled boundary makes no false feature.
 /// Throws std::invalid_argument for a seamless map.
 template <int d>
 std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, const Untangling_options& options)
 {
   if(in.has_links()) throw std::invalid_argument("a sliding boundary is not offered for seamless parameterizations");
   std::vector<bool> fixed = in.is_fixed;
-  auto target = std::make_shared<Sliding_target<d>>(in.positions, boundary_facets<d>(in), fixed, options.feature_angle);
+  const bool has_rest_shape = in.rest_shape.size() == in.positions.size();
+  auto target = std::make_shared<Sliding_target<d>>(in.positions, boundary_facets<d>(in), fixed, options.feature_angle,
+                                                    has_rest_shape ? in.rest_shape : in.positions);
+  in.rest_shape = {};
   fixed.resize(in.positions.size(), false);
   for(std::size_t v = 0; v < fixed.size(); ++v)
     if(target->role(v) == Sliding_role::CORNER) fixed[v] = true;

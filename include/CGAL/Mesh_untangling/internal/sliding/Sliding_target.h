@@ -66,18 +66,21 @@ public:
   using Facet = std::vector<std::size_t>;   // a boundary facet's vertices, in cyclic order (2 in 2D)
 
   /// The target of the boundary `facets` of a mesh at `positions`,
-  /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in degrees.
+  /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in
+  /// degrees; the feature edges are those of the mesh at `shape` (the same
+  /// vertices elsewhere: a valid rest shape, where the map's boundary is
+  /// folded), the patches and curves the facets and feature edges at `positions`.
   Sliding_target(const std::vector<Vector>& positions, const std::vector<Facet>& facets,
-                 const std::vector<bool>& is_fixed, double feature_angle)
+                 const std::vector<bool>& is_fixed, double feature_angle, const std::vector<Vector>& shape)
     : role_(positions.size(), Sliding_role::INTERIOR), place_(positions.size(), 0),
       min_cos_(std::cos(feature_angle * 3.14159265358979323846 / 180))
   {
     for(const Facet& f : facets)
       for(std::size_t v : f) role_[v] = Sliding_role::SURFACE;
     measure_diagonal(positions);
-    const std::vector<std::array<std::size_t, 2>> features = feature_edges(positions, facets);
+    const std::vector<std::array<std::size_t, 2>> features = feature_edges(shape, facets);
     const std::vector<std::vector<std::size_t>> ends = feature_ends(features);
-    classify(positions, ends, is_fixed);
+    classify(shape, ends, is_fixed);
     if constexpr(d == 3) make_patches(positions, facets, features);
     make_curves(positions, ends);
   }
