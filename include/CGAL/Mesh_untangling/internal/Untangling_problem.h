@@ -169,11 +169,11 @@ struct Untangling_problem
   Vector point(std::size_t v) const { return Eigen::Map<const Vector>(&x[d * v]); }
 
   /// Whether the solvers move sliding vertices back onto curved targets.
-  bool retracts() const { return !sliding.empty() && bool(sliding.project_onto_targets); }
+  bool retracts() const { return sliding.retracts(); }
   /// Moves the sliding vertices of the map `y` (normalized) onto their targets.
-  void retract(double* y) const { if(retracts()) sliding.project_onto_targets(y, center, scale, nullptr); }
+  void retract(double* y) const { if(retracts()) sliding.retract(y, center, scale); }
   /// Moves the sliding vertices of x onto their targets and takes their tangents there.
-  void retarget() { if(retracts()) sliding.project_onto_targets(x.data(), center, scale, &sliding.tangent); }
+  void retarget() { if(retracts()) sliding.retract(x.data(), center, scale, &sliding.tangent); }
   Vector to_user(const Vector& p) const { return p * scale + center; }
   Vector from_user(const Vector& p) const { return (p - center) / scale; }
 };

@@ -117,7 +117,7 @@ Untangling_input<d> region_problem(const Untangling_input<d>& in, const std::vec
     sub.positions.push_back(in.positions[v]);
     sub.is_fixed.push_back(on_cut[v] || (!in.is_fixed.empty() && in.is_fixed[v]));
   }
-  sub.sliding = in.sliding.restricted_to(vertex_of);
+  sub.sliding = in.sliding.restricted_to(vertex_of, sub.is_fixed);
   return sub;
 }
 

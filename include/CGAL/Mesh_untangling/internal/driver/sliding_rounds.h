@@ -87,9 +87,10 @@ std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, c
   in.is_fixed = std::move(fixed);
   target->project(in.positions, in.sliding);   // (moves nothing: the target is where they are)
   // (the problems made from `in` copy its slots; a sub-problem's drop this)
-  in.sliding.project_onto_targets = [target, slot = in.sliding.slot](double* x, const Eigen::Matrix<double, d, 1>& center,
-                                                                     double scale, std::vector<Eigen::Matrix<double, d, d>>* tangent) {
-    target->project(x, center, scale, slot, tangent);
+  in.sliding.onto_target = [target](std::size_t v, const Eigen::Matrix<double, d, 1>& point, Eigen::Matrix<double, d, d>* tangent) {
+    const auto [closest, T] = target->closest(v, point, tangent != nullptr);
+    if(tangent) *tangent = T;
+    return closest;
   };
   in.free_boundary_vertex.reset();
   return target;

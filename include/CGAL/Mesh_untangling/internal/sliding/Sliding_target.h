@@ -105,16 +105,12 @@ public:
                         });
   }
 
-  /// The same on a problem's normalized map x (a point is center + scale
-  /// x), the tangents set in `tangent` (at each vertex's `slot`, as
-  /// Sliding_vertices numbers them) when it is given.
-  void project(double* x, const Vector& center, double scale, const std::vector<int>& slot, std::vector<Matrix>* tangent)
+  /// The closest point of sliding vertex v's patch or curve to `point`,
+  /// and its tangent projector there; `search`: a surface vertex's whole
+  /// patch is searched (else a walk from where v last was).
+  std::pair<Vector, Matrix> closest(std::size_t v, const Vector& point, bool search)
   {
-    project_each(tangent != nullptr, [&](std::size_t v) { return Vector(center + scale * Eigen::Map<const Vector>(x + d * v)); },
-                 [&](std::size_t v, const Vector& point, const Matrix& T) {
-                   Eigen::Map<Vector>(x + d * v) = (point - center) / scale;
-                   if(tangent) (*tangent)[std::size_t(slot[v])] = T;
-                 });
+    return role_[v] == Sliding_role::CURVE ? onto_curve(v, point) : onto_patch(v, point, search);
   }
 
   /// The largest distance of a sliding vertex of `positions` from its target.
@@ -140,7 +136,7 @@ private:
     for(std::size_t v = 0; v < role_.size(); ++v) {
       if(!slides(v)) continue;
       const Vector p = position(v);
-      const auto [point, tangent] = role_[v] == Sliding_role::CURVE ? onto_curve(v, p) : onto_patch(v, p, search);
+      const auto [point, tangent] = closest(v, p, search);
       largest = std::max(largest, (point - p).norm());
       moved(v, point, tangent);
     }

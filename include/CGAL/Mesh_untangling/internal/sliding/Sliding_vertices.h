@@ -10,7 +10,7 @@
 // its step solves the tangent system exactly and has no normal part (the two
 // parts do not couple).  A plane or a straight line is kept exactly, a curved
 // target to second order: the solvers move them back onto their targets after
-// every step (`project_onto_targets`: a retraction, as in optimization on
+// every step (`retract()`: a retraction, as in optimization on
 // manifolds) and take the tangents anew at every inner solve, and the driver
 // (driver/sliding_rounds.h) projects once more before the verdict.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_VERTICES_H
@@ -36,14 +36,33 @@ struct Sliding_vertices
   std::vector<int> slot;          // per mesh vertex: its row of `tangent`, -1 when it does not slide; empty: none slides
   std::vector<Matrix> tangent;    // per sliding vertex: the orthogonal projector on the directions it may move in
   std::vector<std::size_t> vertex;   // per sliding vertex: which one it is
+  /// per sliding vertex: which one it is in the target's numbering (the
+  /// mesh's; a sub-problem numbers its vertices otherwise)
+  std::vector<std::size_t> target_vertex;
   using Vector = Eigen::Matrix<double, d, 1>;
-  /// Moves the sliding vertices of x (d coordinates per vertex, normalized:
-  /// the point is center + scale x) to the closest point of their targets,
-  /// and sets their tangents there in `tangent` when it is given.  Empty:
-  /// the tangent planes and lines are the targets (a sub-problem's).
-  std::function<void(double* x, const Vector& center, double scale, std::vector<Matrix>* tangent)> project_onto_targets;
+  /// The closest point to `point` of the target of vertex v (the target's
+  /// numbering), and the tangent projector there in `*tangent` when given
+  /// (the whole patch searched then, a walk from the last place otherwise:
+  /// sliding/Sliding_target.h).  Empty: the tangent planes and lines are
+  /// the targets.
+  std::function<Vector(std::size_t v, const Vector& point, Matrix* tangent)> onto_target;
 
   bool empty() const { return vertex.empty(); }
+  /// Whether the sliding vertices are moved back onto curved targets.
+  bool retracts() const { return !empty() && bool(onto_target); }
+
+  /// Moves the sliding vertices of x (d coordinates per vertex, normalized:
+  /// the point is center + scale x) to the closest point of their targets
+  /// (a retraction), and sets their tangents there in `tangents` (one per
+  /// sliding vertex, as `tangent`) when it is given.
+  void retract(double* x, const Vector& center, double scale, std::vector<Matrix>* tangents = nullptr) const
+  {
+    for(std::size_t s = 0; s < size(); ++s) {
+      Eigen::Map<Vector> p(x + d * vertex[s]);
+      const Vector closest = onto_target(target_vertex[s], Vector(center + scale * p), tangents ? &(*tangents)[s] : nullptr);
+      p = (closest - center) / scale;
+    }
+  }
   std::size_t size() const { return vertex.size(); }
   /// (phantom vertices, appended after the mesh's, never slide)
   bool slides(std::size_t v) const { return v < slot.size() && slot[v] >= 0; }
@@ -55,17 +74,21 @@ struct Sliding_vertices
     if(slot.empty()) slot.assign(n, -1);
     slot[v] = int(vertex.size());
     vertex.push_back(v);
+    target_vertex.push_back(v);
     tangent.push_back(T);
   }
 
-  /// The sliding vertices of a sub-problem whose vertex i is `vertex_of[i]`,
-  /// moving in their tangent planes and lines (no projection: its
-  /// numbering is not the target's).
-  Sliding_vertices restricted_to(const std::vector<std::size_t>& vertex_of) const
+  /// The sliding vertices of a sub-problem whose vertex i is `vertex_of[i]`
+  /// and fixed when `is_fixed[i]`, on the same targets.
+  Sliding_vertices restricted_to(const std::vector<std::size_t>& vertex_of, const std::vector<bool>& is_fixed) const
   {
     Sliding_vertices sub;
     for(std::size_t i = 0; i < vertex_of.size(); ++i)
-      if(slides(vertex_of[i])) sub.add(i, vertex_of.size(), projector(vertex_of[i]));
+      if(slides(vertex_of[i]) && !is_fixed[i]) {
+        sub.add(i, vertex_of.size(), projector(vertex_of[i]));
+        sub.target_vertex.back() = target_vertex[std::size_t(slot[vertex_of[i]])];
+      }
+    sub.onto_target = onto_target;
     return sub;
   }
 };
