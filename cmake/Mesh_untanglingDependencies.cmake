@@ -4,7 +4,7 @@
 # its own configure step finds: CHOLMOD and TBB when they are there.
 #
 #   mesh_untangling_find_dependencies()
-#     finds CGAL, Eigen 3, LBFGSpp, and (when found) TBB and CHOLMOD; sets
+#     finds CGAL, Eigen 3, LBFGSpp, zlib, and (when found) TBB and CHOLMOD; sets
 #     MESH_UNTANGLING_MISSING (a sentence naming what is missing, empty when
 #     every required dependency was found), MESH_UNTANGLING_HAS_TBB and
 #     MESH_UNTANGLING_HAS_CHOLMOD.
@@ -59,6 +59,15 @@ macro(mesh_untangling_find_dependencies)
     string(APPEND MESH_UNTANGLING_MISSING " LBFGSpp (Debian: liblbfgspp-dev);")
   endif()
 
+  # zlib uncompresses the .vtu files that ParaView writes by default
+  # (vtkZLibDataCompressor); the reader is in the headers (IO/VTU.h).
+  if(NOT TARGET ZLIB::ZLIB)
+    find_package(ZLIB QUIET)
+  endif()
+  if(NOT TARGET ZLIB::ZLIB)
+    string(APPEND MESH_UNTANGLING_MISSING " zlib (Debian: zlib1g-dev);")
+  endif()
+
   # CHOLMOD's supernodal Cholesky factorizes the Newton systems much faster
   # than Eigen's simplicial one on 3D meshes; without it the default solver
   # still works.  (The cached paths alone would keep CHOLMOD after
@@ -79,7 +88,7 @@ endmacro()
 
 macro(mesh_untangling_link_dependencies target)
   target_compile_features(${target} INTERFACE cxx_std_17)
-  target_link_libraries(${target} INTERFACE CGAL::CGAL CGAL::Eigen3_support)
+  target_link_libraries(${target} INTERFACE CGAL::CGAL CGAL::Eigen3_support ZLIB::ZLIB)
   target_include_directories(${target} INTERFACE ${LBFGSPP_INCLUDE_DIR})
   if(MESH_UNTANGLING_HAS_TBB)
     target_link_libraries(${target} INTERFACE CGAL::TBB_support)

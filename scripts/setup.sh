@@ -64,9 +64,11 @@ fi
 # safe but 8x slower (Newton on a 20^3 cube, AMD ordering: 67 s against 8.4 s).
 # clang, libclang-rt-dev: the libFuzzer targets (test/Mesh_untangling/fuzz,
 # ctest fuzz_*); libclang-rt-dev holds libclang_rt.fuzzer for Debian's clang.
+# zlib1g-dev: the .vtu reader uncompresses vtkZLibDataCompressor data (what
+# ParaView writes by default) with zlib (IO/VTU.h).
 PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
           libsuitesparse-dev libopenblas0-serial liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev
-          libmpfr-dev)
+          libmpfr-dev zlib1g-dev)
 # The Python module (python/, built for /usr/bin/python3): pybind11 and
 # numpy; meshio for the example that reads and writes other formats.
 if [ "$WITH_PYTHON" = 1 ]; then

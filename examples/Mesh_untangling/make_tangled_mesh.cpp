@@ -8,8 +8,8 @@
 // the square as the uv map of a 3D surface (the rest, a bump over it).  OUTPUT is a Du et al. .input file
 // (rest, tangled map and fixed vertices in one file; simplices only) or any
 // mesh format that holds the elements.
-// The others hold less: .off, .vtk, .mesh and .msh one geometry, and all but
-// .vtk (its point data 'fixed') and .msh (its physical group 'fixed') no
+// The others hold less: .off, .vtk, .vtu, .mesh and .msh one geometry, and all
+// but .vtk and .vtu (their point data 'fixed') and .msh (its physical group 'fixed') no
 // fixed vertices.  Beside OUTPUT = NAME.EXT go
 // what the format cannot hold, NAME-fixed.txt and the rest grid
 // NAME-rest.EXT, so that every format gives the same problem; the command
@@ -69,7 +69,8 @@ std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
   std::vector<std::string> written;
   std::string arguments;
   try {
-    if(extension != ".vtk" && extension != ".msh") {   // (a .vtk holds them as point data, a .msh as a group)
+    // (a .vtk or .vtu holds them as point data, a .msh as a group)
+    if(extension != ".vtk" && extension != ".vtu" && extension != ".msh") {
       const std::string fixed = companion(output, "-fixed.txt");
       IO::write_handles(fixed, mesh.fixed);
       written.push_back(fixed);

@@ -126,7 +126,8 @@ using IO::internal::lowercase_extension;
 
 bool is_mesh_extension(const std::string& ext)
 {
-  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".mesh" || ext == ".msh" || ext == ".input";
+  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".vtu" || ext == ".mesh" || ext == ".msh"
+         || ext == ".input";
 }
 
 std::string default_output(const std::string& input)
@@ -152,7 +153,7 @@ void check_output_paths(const Arguments& args)
   const std::string ext = lowercase_extension(args.output);
   if(!is_mesh_extension(ext))
     throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
-                      "' (supported: .obj .off .vtk .mesh .msh .input)");
+                      "' (supported: .obj .off .vtk .vtu .mesh .msh .input)");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
   const std::pair<const char*, const std::string*> outputs[] = {
@@ -299,11 +300,11 @@ void check_output_format(const std::string& output, const Mesh_file& mesh)
 {
   const std::string ext = lowercase_extension(output);
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
-    throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .mesh, .msh or .input)");
+    throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .vtu, .mesh, .msh or .input)");
   if(mesh.cell_size == 8 && (ext == ".obj" || ext == ".off" || ext == ".input"))
-    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk, .mesh or .msh)");
+    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk, .vtu, .mesh or .msh)");
   if(mesh.cell_size == 4 && ext == ".input")
-    throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .mesh, .msh, .obj or .off)");
+    throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .vtu, .mesh, .msh, .obj or .off)");
   if(ext == ".input" && mesh.rest.empty())
     throw Usage_error(output + ": the .input format needs rest positions (give --rest)");
 }
@@ -319,10 +320,10 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
                       " (their corner simplices overlap: fix the boundary)");
   const std::string ext = lowercase_extension(args.phantoms);
   if(!is_mesh_extension(ext) || ext == ".input")
-    throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .mesh, .msh, "
-                      ".off or .obj file (.vtk carries the fields)");
+    throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .vtu, .mesh, "
+                      ".msh, .off or .obj file (.vtk and .vtu carry the fields)");
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
-    throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk, .mesh or .msh)");
+    throw Usage_error(args.phantoms + ": phantom tetrahedra cannot be written as " + ext + " (use .vtk, .vtu, .mesh or .msh)");
 }
 
 /// The map as it reads back from the written file.
@@ -665,7 +666,7 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   // Fields are measured on the coordinates as written: the writers print
   // the shortest text that reads back to the same doubles.
   std::optional<Map_fields> fields;
-  if(lowercase_extension(args.output) == ".vtk") {
+  if(lowercase_extension(args.output) == ".vtk" || lowercase_extension(args.output) == ".vtu") {
     fields = measure_map(mesh, run.fixed, run.record);
     if(args.refine) add_parent_fields(mesh, run.record, fields->points);
   }
@@ -1050,12 +1051,13 @@ int main(int argc, char** argv)
                "locally invertible (cells: every corner simplex positive).\n"
                "Exit code: 0 locally invertible, 1 not (result written anyway), 2 bad usage or input, 3 inverted "
                "elements whose vertices are all fixed are left (nothing can repair them; result written)."};
-  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .mesh, .msh (Gmsh), .input; "
-                 "triangles, tetrahedra, quadrilaterals (.obj .off .vtk .mesh .msh) or hexahedra (.vtk .mesh .msh)")
+  app.add_option("INPUT", args.input, "tangled mesh: .obj (v = domain, vt = map), .off, .vtk, .vtu, .mesh, .msh (Gmsh), "
+                 ".input; triangles, tetrahedra, quadrilaterals (.obj .off .vtk .vtu .mesh .msh) or hexahedra (.vtk .vtu "
+                 ".mesh .msh)")
     ->required();
   app.add_option("--rest", args.rest, "rest (target) geometry with the same vertices; default: regular simplices");
   auto* fixed = app.add_option("--fixed", args.fixed, "file of fixed vertex ids (0-based; empty: none); default: "
-                               "the handles of an .input file, the 'fixed' point scalar of a .vtk file");
+                               "the handles of an .input file, the 'fixed' point scalar of a .vtk or .vtu file");
   auto* fix_boundary = app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
   auto* slide = app.add_flag("--slide-boundary", args.slide_boundary, "the boundary vertices slide on the input's "
                "boundary as given: on their surface patch, or on their feature curve (an edge whose facets' planes meet "
@@ -1065,7 +1067,7 @@ int main(int argc, char** argv)
   app.add_option("--feature-angle", args.feature_angle, "with --slide-boundary: the angle in degrees, in (0, 90], "
                  "between two boundary facets' planes beyond which their edge is a feature (default 35)")
     ->check(CLI::Range(1e-9, 90.0))->needs(slide);
-  app.add_option("-o,--output", args.output, "result (format by extension; .vtk adds per-cell det J, distortions and "
+  app.add_option("-o,--output", args.output, "result (format by extension; .vtk and .vtu add per-cell det J, distortions and "
                  "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");
   app.add_option("--report", args.report, "JSON report with every figure");
   app.add_option("--solver", args.solver, "inner solver: auto (newton, or lbfgs where a Newton factorization "
@@ -1116,8 +1118,8 @@ int main(int argc, char** argv)
   app.add_option("--quads", args.quads, "the quad mesh that an integer-grid map draws on its surface (an OBJ with "
                  "seams whose transitions translate by integers, its cones on integer points), as .obj; the report "
                  "says why when there is none, and then the file is not written and the exit code is 1");
-  app.add_option("--phantoms", args.phantoms, "the phantom elements used, on the final map: .vtk (with a 'positive' "
-                 "cell field), .mesh, .off or .obj");
+  app.add_option("--phantoms", args.phantoms, "the phantom elements used, on the final map: .vtk or .vtu (with a "
+                 "'positive' cell field), .mesh, .off or .obj");
   app.add_option("--threads", args.threads, "at most N threads (default: every core); the result is the same, "
                  "bit for bit, with any number")->check(CLI::Range(1, max_thread_count));
   app.add_flag("-q,--quiet", args.quiet, "no progress on stderr (a bar on a terminal, else a line per eps step)");

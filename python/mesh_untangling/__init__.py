@@ -164,13 +164,13 @@ def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind
 
 
 def read(path, *, weld="auto"):
-    """Reads the mesh file at ``path`` (.obj, .off, .vtk, .mesh, .msh, .input) into a Mesh.
+    """Reads the mesh file at ``path`` (.obj, .off, .vtk, .vtu, .mesh, .msh, .input) into a Mesh.
 
     ``mesh.vertices`` is the map (OBJ: the vt lines; a file with one geometry:
     it), ``mesh.rest`` the rest when the file has one (OBJ: the v lines;
     .input: the rest), ``mesh.elements`` the elements, ``mesh.kind`` their
     kind, ``mesh.fixed`` the fixed vertex ids the file lists (.input handles,
-    the 'fixed' point field of a .vtk, the physical group 'fixed' of a .msh), for an OBJ with seams
+    the 'fixed' point field of a .vtk or .vtu, the physical group 'fixed' of a .msh), for an OBJ with seams
     ``mesh.rest_elements`` the surface's triangles, and for a .vtk
     ``mesh.point_fields`` and ``mesh.cell_fields``: its scalars of one
     component by name (int64 for integer types, else float64; the fields
@@ -193,12 +193,12 @@ def read(path, *, weld="auto"):
 
 def write(path, vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None, point_fields=None,
           cell_fields=None, layout=None):
-    """Writes a mesh file in the format of the extension (.obj, .off, .vtk, .mesh, .msh, .input).
+    """Writes a mesh file in the format of the extension (.obj, .off, .vtk, .vtu, .mesh, .msh, .input).
 
     ``vertices``, ``elements``, ``rest``, ``kind`` and ``rest_elements`` are
     the arrays of untangle() (OBJ writes ``rest`` as v and ``vertices`` as
     vt; a map alone is its own v); ``fixed`` is written where the format
-    holds it (.input handles, a .vtk 'fixed' field, a .msh group 'fixed').  ``point_fields`` and
+    holds it (.input handles, a .vtk or .vtu 'fixed' field, a .msh group 'fixed').  ``point_fields`` and
     ``cell_fields`` (.vtk only) map field names to one number per vertex or
     per element.  ``layout``: the Mesh that read() returned for an OBJ whose
     seams were written as duplicated v: the OBJ is written back with that

@@ -3,7 +3,9 @@
 #   . cli_test_harness.sh NAME UNTANGLE_MESH MAKE_TANGLED_MESH [...]
 # It checks the two programs and makes their paths absolute (UNTANGLE, MAKE),
 # moves into a temporary folder that is removed at exit (read-only folders
-# included), and defines `check DESCRIPTION COMMAND...` with its counters.
+# included), and defines `check DESCRIPTION COMMAND...` with its counters,
+# and the steps of the tangled cube's round trip (cube_make, cube_untangle,
+# cube_read_back) with their JSON helpers.
 
 harness_name=$1
 if [ $# -lt 3 ] || [ ! -x "$2" ] || [ ! -x "$3" ]; then
@@ -33,4 +35,47 @@ check() {
     failures=$((failures + 1))
     echo "FAIL: $what" >&2
   fi
+}
+
+# For the formats that hold the fixed vertices (test_cli_gmsh.sh,
+# test_cli_vtu.sh): a tangled cube of tetrahedra, cube.EXT, with its rest
+# grid, untangled into out.EXT, which reads back untangled.  Each program's
+# output and exit status go to NAME.out and NAME.rc (make, out, again); the
+# reports out.json and again.json are pretty-printed JSON (one top-level key
+# a line).  test_cli.sh defines its own json_get, json_is and json_positive.
+json_get() { grep -E "^  \"$2\": " "$1" 2> /dev/null | head -n 1 | sed -E 's/^  "[^"]*": //; s/,$//'; }
+json_is() { [ "$(json_get "$1" "$2")" = "$3" ]; }
+json_positive() { local v; v=$(json_get "$1" "$2"); [[ "$v" =~ ^[0-9]+$ ]] && [ "$v" -gt 0 ]; }
+ran_well() { [ "$(cat "$1.rc")" = 0 ]; }
+
+# cube_make EXT: make_tangled_mesh writes cube.EXT and cube-rest.EXT, the
+# fixed vertices in the file (no cube-fixed.txt).
+cube_make() {
+  "$MAKE" cube 4 0.6 1 "cube.$1" > make.out 2>&1
+  echo $? > make.rc
+  check "make_tangled_mesh cube.$1: exit 0" ran_well make
+  check "make_tangled_mesh cube.$1: the fixed vertices in the file, no cube-fixed.txt" [ ! -e cube-fixed.txt ]
+}
+
+# cube_untangle EXT WHERE [OPTION...]: untangle_mesh untangles cube.EXT into
+# out.EXT, with the 98 fixed vertices of WHERE (in the messages).
+cube_untangle() {
+  local ext=$1 where=$2
+  shift 2
+  "$UNTANGLE" "cube.$ext" --rest "cube-rest.$ext" -o "out.$ext" --report out.json "$@" > out.out 2>&1
+  echo $? > out.rc
+  check "untangle_mesh cube.$ext: exit 0" ran_well out
+  check "untangle_mesh cube.$ext: tangled before" json_positive out.json inverted_before
+  check "untangle_mesh cube.$ext: no inverted tetrahedron after" json_is out.json inverted_after 0
+  check "untangle_mesh cube.$ext: the fixed vertices of $where" json_is out.json fixed_vertices 98
+}
+
+# cube_read_back EXT: out.EXT, untangled again, has no inverted tetrahedron
+# and the same fixed vertices.
+cube_read_back() {
+  "$UNTANGLE" "out.$1" --rest "cube-rest.$1" -o "again.$1" --report again.json -q > again.out 2>&1
+  echo $? > again.rc
+  check "the result read back: exit 0" ran_well again
+  check "the result read back: no inverted tetrahedron" json_is again.json inverted_before 0
+  check "the result read back: the same fixed vertices" json_is again.json fixed_vertices 98
 }

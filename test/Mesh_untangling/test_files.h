@@ -1,9 +1,10 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// What the file tests (test_io, test_gmsh, test_file_safety) share: a
-// failure counted with the caller's line, a fresh folder for the files they
-// write, and the check of a reader's error.
+// What the file tests (test_io, test_gmsh, test_vtu, test_file_safety) share:
+// a failure counted with the caller's line, a fresh folder for the files they
+// write, the check of a reader's error, and the fixture folder and the end of
+// main (test_gmsh, test_vtu).
 #ifndef MESH_UNTANGLING_TEST_FILES_H
 #define MESH_UNTANGLING_TEST_FILES_H
 
@@ -71,6 +72,30 @@ void check_read_error(const char* file, int caller, const Read& read, const std:
   } catch(const std::exception& e) {
     report_failure(file, caller, std::string("wrong exception type: ") + e.what());
   }
+}
+
+/// Runs `check(folder)` on the folder of a test's fixture files, or counts a
+/// failure at `file`:`line` when there is no such folder.
+template <class Check>
+void check_fixtures(const char* file, int line, const std::filesystem::path& folder, const Check& check)
+{
+  if(std::filesystem::is_directory(folder))
+    check(folder);
+  else
+    report_failure(file, line, "no folder " + folder.string());
+}
+
+/// The end of the test `name`: removes its folder `temporary`, says whether
+/// every check passed, and gives main's exit status.
+inline int finish(const std::string& name, const std::filesystem::path& temporary)
+{
+  std::filesystem::remove_all(temporary);
+  if(failures() != 0) {
+    std::cerr << failures() << " check(s) failed" << std::endl;
+    return 1;
+  }
+  std::cout << name << ": all checks passed" << std::endl;
+  return 0;
 }
 
 } // namespace test

@@ -391,16 +391,6 @@ int main()
   test_planar_and_cells();
   test_exact_numbers();
   test_errors();
-  const fs::path fixtures = MU_GMSH_FIXTURES;
-  if(fs::is_directory(fixtures))
-    test_gmsh_files(fixtures);
-  else
-    report_failure(__LINE__, "no folder " + fixtures.string());
-  fs::remove_all(temp_dir);
-  if(test::failures() != 0) {
-    std::cerr << test::failures() << " check(s) failed" << std::endl;
-    return 1;
-  }
-  std::cout << "test_gmsh: all checks passed" << std::endl;
-  return 0;
+  test::check_fixtures(__FILE__, __LINE__, MU_GMSH_FIXTURES, test_gmsh_files);
+  return test::finish("test_gmsh", temp_dir);
 }

@@ -686,6 +686,7 @@ void write_mesh_file_with_fields(const std::string& path, const Mesh_file& mesh,
 {
   const std::string extension = MU::IO::internal::lowercase_extension(path);
   if(extension == ".vtk") return MU::IO::write_VTK(path, mesh, cells, points);
+  if(extension == ".vtu") return MU::IO::write_VTU(path, mesh, cells, points);
   if(extension != ".obj" || !mesh.rest.empty()) return MU::IO::write_mesh_file(path, mesh);
   Mesh_file own_domain = mesh;
   own_domain.rest = mesh.map;

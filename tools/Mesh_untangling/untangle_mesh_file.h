@@ -113,7 +113,7 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
 void project_surface_on_best_fit_plane(Mesh_file& mesh);
 
 /// Writes `mesh` to `path` in the format of its extension, with `cells` and
-/// `points` when it is .vtk (the other formats hold no field).  An OBJ keeps the
+/// `points` when it is .vtk or .vtu (the other formats hold no field).  An OBJ keeps the
 /// domain in `v` and the map in `vt`: a mesh with a map alone is written as
 /// its own domain, so that it reads back as a map.
 /// Throws CGAL::Mesh_untangling::IO::Write_error as the writers do.

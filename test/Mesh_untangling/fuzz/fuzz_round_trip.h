@@ -13,6 +13,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/VTK_field.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -146,6 +147,45 @@ int mesh_round_trip(const std::uint8_t* data, std::size_t size, const std::strin
                     const Read& read, const Write& write)
 {
   return round_trip(data, size, extension, read, write, check_same_mesh);
+}
+
+/// A mesh with the cell and point fields that read_VTK() and read_VTU() fill.
+struct Mesh_with_fields
+{
+  CGAL::Mesh_untangling::IO::Mesh_file mesh;
+  CGAL::Mesh_untangling::IO::VTK_fields cells, points;
+};
+
+/// `same_values(a, b)` compares the values of two fields of the same name.
+template <class Same_values>
+void check_same_fields(const CGAL::Mesh_untangling::IO::VTK_fields& a,
+                       const CGAL::Mesh_untangling::IO::VTK_fields& b, const Same_values& same_values)
+{
+  if(a.size() != b.size()) mismatch("the number of fields");
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(a[i].name != b[i].name || a[i].integer != b[i].integer || !same_values(a[i].values, b[i].values))
+      mismatch("a field");
+}
+
+/// The round trip of a VTK reader and writer, the fields included:
+/// `read(path, &cells, &points)` returns the mesh, `write(path, mesh, cells, points)`.
+template <class Read, class Write, class Same_values>
+int fields_round_trip(const std::uint8_t* data, std::size_t size, const std::string& extension,
+                      const Read& read, const Write& write, const Same_values& same_values)
+{
+  return round_trip(
+    data, size, extension,
+    [&](const std::string& path) {
+      Mesh_with_fields m;
+      m.mesh = read(path, &m.cells, &m.points);
+      return m;
+    },
+    [&](const std::string& path, const Mesh_with_fields& m) { write(path, m.mesh, m.cells, m.points); },
+    [&](const Mesh_with_fields& a, const Mesh_with_fields& b) {
+      check_same_mesh(a.mesh, b.mesh);
+      check_same_fields(a.cells, b.cells, same_values);
+      check_same_fields(a.points, b.points, same_values);
+    });
 }
 
 } // namespace mu_fuzz

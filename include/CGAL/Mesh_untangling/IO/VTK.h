@@ -15,7 +15,7 @@ namespace Mesh_untangling {
 namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
-/// Reads a legacy ASCII VTK unstructured grid of triangles (type 5) or
+/// Reads a legacy VTK unstructured grid, ASCII or binary, of triangles (type 5) or
 /// tetrahedra (type 10) into `simplices`, or of quadrilaterals (type 9) or
 /// hexahedra (type 12, VTK's vertex order) into `cells`, and the points into
 /// `map`; a file that mixes types is rejected, naming the line.  A point scalar named `fixed` (0 or 1 per
@@ -24,7 +24,11 @@ namespace IO {
 /// metadata that VTK 8 and later write are skipped, but for the scalars of
 /// one component, which `cell_fields` and `point_fields` receive when given
 /// (as write_VTK() writes its fields; `integer` for the integer types).
-/// \throws Read_error if the file is missing, binary, or malformed, if
+/// A binary file (third line BINARY, as VTK and meshio write it) holds its
+/// numbers raw and big-endian after each section line; its errors name the
+/// byte offset, and its `simplex_lines` and `cell_lines` are empty.  The VTK 5
+/// layout of cells (OFFSETS and CONNECTIVITY) is not read, ASCII or binary.
+/// \throws Read_error if the file is missing or malformed, if
 /// its `fixed` scalar holds anything but a 0 or a 1 per point, or if a
 /// field kept has a value that is no number or two fields share a name.
 inline Mesh_file read_VTK(const std::string& path, VTK_fields* cell_fields = nullptr,
@@ -32,14 +36,14 @@ inline Mesh_file read_VTK(const std::string& path, VTK_fields* cell_fields = nul
 {
   return internal::read_or_report_memory(path, [&] {
     internal::Text_file file(path);
-    internal::read_VTK_header(file);
+    const bool binary = internal::read_VTK_header(file);
     Mesh_file mesh;
-    internal::read_VTK_points(file, mesh);
-    std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size());
-    internal::read_VTK_cell_types(file, cells, mesh);
+    internal::read_VTK_points(file, mesh, binary);
+    std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size(), binary);
+    internal::read_VTK_cell_types(file, cells, mesh, binary);
     if(cell_fields) cell_fields->clear();
     if(point_fields) point_fields->clear();
-    internal::read_VTK_attributes(file, mesh, cell_fields, point_fields);
+    internal::read_VTK_attributes(file, mesh, cell_fields, point_fields, binary);
     mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
     return mesh;
   });
@@ -58,11 +62,8 @@ inline Mesh_file read_VTK(const std::string& path, VTK_fields* cell_fields = nul
 inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_fields& cell_fields = {},
                       const VTK_fields& point_fields = {})
 {
-  internal::check_for_writing(path, mesh);
-  const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
-  internal::check_VTK_fields(path, cell_fields, mesh.simplices.size() + mesh.cells.size(), "cell");
-  internal::check_VTK_fields(path, point_fields, points.size(), "point");
-  const VTK_fields all_point_fields = internal::VTK_point_fields(path, mesh, point_fields, points.size());
+  const internal::VTK_output output = internal::checked_VTK_output(path, mesh, cell_fields, point_fields);
+  const std::vector<std::array<double, 3>>& points = output.points;
   internal::Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "# vtk DataFile Version 2.0\nMesh_untangling\nASCII\nDATASET UNSTRUCTURED_GRID\n";
@@ -73,7 +74,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
   }
   internal::write_VTK_cells(out, mesh);
   internal::write_VTK_fields(out, cell_fields, mesh.simplices.size() + mesh.cells.size(), "CELL_DATA");
-  internal::write_VTK_fields(out, all_point_fields, points.size(), "POINT_DATA");
+  internal::write_VTK_fields(out, output.point_fields, points.size(), "POINT_DATA");
   file.commit();
 }
 

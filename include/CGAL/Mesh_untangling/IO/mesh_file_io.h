@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/TLC_input.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
+#include <CGAL/Mesh_untangling/IO/VTU.h>
 
 #include <cctype>
 #include <filesystem>
@@ -21,7 +22,7 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-inline const char* supported_extensions() { return "supported: .obj .off .vtk .mesh .msh .input"; }
+inline const char* supported_extensions() { return "supported: .obj .off .vtk .vtu .mesh .msh .input"; }
 
 inline std::string lowercase_extension(const std::string& path)
 {
@@ -42,7 +43,8 @@ inline std::string unsupported_extension(const std::string& path)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a mesh file, choosing the format from the extension (case-insensitive):
-/// `.obj`, `.off`, `.vtk`, `.mesh` (MEDIT), `.msh` (Gmsh) or `.input` (Du et al.);
+/// `.obj`, `.off`, `.vtk` (legacy VTK), `.vtu` (XML VTK), `.mesh` (MEDIT), `.msh` (Gmsh)
+/// or `.input` (Du et al.);
 /// `welding` applies to OBJ files (read_OBJ()).
 /// \throws Read_error if the extension is not one of these, or as the reader does.
 inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& welding = OBJ_welding())
@@ -54,6 +56,8 @@ inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& weld
     return read_OFF(path);
   if(extension == ".vtk")
     return read_VTK(path);
+  if(extension == ".vtu")
+    return read_VTU(path);
   if(extension == ".mesh")
     return read_MEDIT(path);
   if(extension == ".msh")
@@ -75,6 +79,8 @@ inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
     return write_OFF(path, mesh);
   if(extension == ".vtk")
     return write_VTK(path, mesh);
+  if(extension == ".vtu")
+    return write_VTU(path, mesh);
   if(extension == ".mesh")
     return write_MEDIT(path, mesh);
   if(extension == ".msh")

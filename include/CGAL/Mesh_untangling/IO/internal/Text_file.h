@@ -154,6 +154,39 @@ public:
     return true;
   }
 
+  /// The byte offset of what comes next, for errors in binary data.
+  std::size_t offset() const { return pos_; }
+
+  /// How many bytes are left.
+  std::size_t remaining() const { return text_.size() - pos_; }
+
+  /// Ends the line before a block of binary data (a binary legacy VTK file),
+  /// which starts after its '\n': false if other text is left on the line.
+  bool end_line_before_data()
+  {
+    skip_blanks_on_line();
+    if(pos_ == text_.size())
+      return true;
+    if(text_[pos_] != '\n')
+      return false;
+    ++pos_;
+    ++line_;
+    return true;
+  }
+
+  /// The next `n` bytes, whatever they are; false if fewer are left.  Their
+  /// '\n' are counted, so that the lines after the block are the editor's.
+  bool take_bytes(std::size_t n, std::string_view& bytes)
+  {
+    if(n > remaining())
+      return false;
+    bytes = std::string_view(text_).substr(pos_, n);
+    for(char c : bytes)
+      line_ += c == '\n' ? 1 : 0;
+    pos_ += n;
+    return true;
+  }
+
   /// Upper bound on how many more items the file can hold, for reserve():
   /// a huge count in a small file must fail as truncated, not exhaust memory.
   std::size_t sane_capacity(std::size_t count) const

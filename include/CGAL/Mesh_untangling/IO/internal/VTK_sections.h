@@ -1,7 +1,9 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The sections of a legacy ASCII VTK file, read and written one at a time.
+// The sections of a legacy VTK file, read (ASCII or binary) and written
+// (ASCII) one at a time.  In a binary file the section lines are text and
+// the numbers after each are raw (VTK_binary_values.h).
 #ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_VTK_SECTIONS_H
 #define CGAL_MESH_UNTANGLING_IO_INTERNAL_VTK_SECTIONS_H
 
@@ -10,6 +12,9 @@
 #include <CGAL/Mesh_untangling/IO/VTK_field.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
+#include <CGAL/Mesh_untangling/IO/internal/VTK_binary_values.h>
+#include <CGAL/Mesh_untangling/IO/internal/VTK_cell_types.h>
+#include <CGAL/Mesh_untangling/IO/internal/VTK_field_rules.h>
 #include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
 #include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
@@ -29,13 +34,6 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace IO {
 namespace internal {
-
-struct VTK_cell
-{
-  std::array<std::size_t, 8> ids;
-  std::size_t size;
-  std::size_t line;
-};
 
 inline bool is_VTK_section(std::string_view word)
 {
@@ -110,29 +108,33 @@ inline void check_VTK_data_type(const Text_file& file, const Token& token, const
   file.fail(token.line, "unknown " + what + " data type " + quote_token(token.text));
 }
 
-// The point scalar that marks the fixed vertices (written by write_VTK()).
-constexpr const char* VTK_fixed_field = "fixed";
-
-inline std::string VTK_fixed_name(const char* kind)
-{
-  return std::string(kind) + " '" + VTK_fixed_field + "'";
-}
-
-// A 0 or a 1 per point: the fixed vertices.  `at` is the line of the array's header.
-inline void read_VTK_fixed_values(Text_file& file, std::size_t at, const std::string& what, Mesh_file& mesh)
+// A 0 or a 1 per point: the fixed vertices.  `at` is the line of the array's
+// header, `type` its data type.
+inline void read_VTK_fixed_values(Text_file& file, std::size_t at, const std::string& what, Mesh_file& mesh,
+                                  const Token& type, bool binary)
 {
   if(mesh.has_fixed)
     file.fail(at, "a second " + what + " (the fixed vertices are already given)");
   const std::size_t n = mesh.map.size();
+  if(binary) {
+    const VTK_binary_block flags = read_VTK_binary_values(file, type, n, what);
+    for(std::size_t v = 0; v < n; ++v) {
+      if(!is_VTK_flag(flags.values[v]))
+        fail_at_byte(file, flags.offset_of(v), VTK_flag_defect(what, v, number_text(flags.values[v])));
+      if(flags.values[v] == 1)
+        mesh.fixed.push_back(v);
+    }
+    mesh.has_fixed = true;
+    return;
+  }
   for(std::size_t v = 0; v < n; ++v) {
     const Token t = next_VTK_value(file, "POINT_DATA", v, n, "fixed flags");
     // (the message is built only on failure: this runs once per point)
     double flag = 0;
     if(parse_double(t.text, flag) != Number_status::OK)
       flag = to_double(file, t, what + " of point " + std::to_string(v));   // throws, naming the point
-    if(flag != 0 && flag != 1)
-      file.fail(t.line, what + " of point " + std::to_string(v) + " is " + quote_token(t.text)
-                            + "; expected 0 or 1");
+    if(!is_VTK_flag(flag))
+      file.fail(t.line, VTK_flag_defect(what, v, quote_token(t.text)));
     if(flag == 1)
       mesh.fixed.push_back(v);
   }
@@ -145,7 +147,7 @@ inline void read_VTK_fixed_values(Text_file& file, std::size_t at, const std::st
 // before POINTS and is skipped; within POINT_DATA (`point_data` given), an
 // array named 'fixed' gives the fixed vertices, as ParaView may save the
 // point scalar 'fixed' there.
-inline void read_VTK_field_data(Text_file& file, Mesh_file* point_data = nullptr)
+inline void read_VTK_field_data(Text_file& file, Mesh_file* point_data = nullptr, bool binary = false)
 {
   Token name, count_token;
   if(!file.next_token(name) || !file.next_token(count_token))
@@ -171,10 +173,14 @@ inline void read_VTK_field_data(Text_file& file, Mesh_file* point_data = nullptr
         file.fail(header[2].line, array + " has " + std::to_string(tuples) + " values but the file has "
                                       + std::to_string(point_data->map.size()) + " points");
       check_VTK_data_type(file, header[3], array);
-      read_VTK_fixed_values(file, header[0].line, array, *point_data);
+      read_VTK_fixed_values(file, header[0].line, array, *point_data, header[3], binary);
       continue;
     }
     const std::size_t values = components * tuples;
+    if(binary) {
+      read_VTK_binary_values(file, header[3], values, what);
+      continue;
+    }
     for(std::size_t i = 0; i < values; ++i)
       next_VTK_value(file, "FIELD", i, values, "values");
   }
@@ -182,14 +188,14 @@ inline void read_VTK_field_data(Text_file& file, Mesh_file* point_data = nullptr
 
 // The next section keyword, which must be `keyword`; array metadata and data
 // set field data on the way are skipped.
-inline Token expect_VTK_section(Text_file& file, const char* keyword)
+inline Token expect_VTK_section(Text_file& file, const char* keyword, bool binary = false)
 {
   for(;;) {
     Token token;
     if(!next_VTK_token(file, token))
       file.fail_truncated(std::string("expected ") + keyword);
     if(same_keyword(token.text, "FIELD"))
-      read_VTK_field_data(file);
+      read_VTK_field_data(file, nullptr, binary);
     else if(same_keyword(token.text, keyword))
       return token;
     else
@@ -197,7 +203,8 @@ inline Token expect_VTK_section(Text_file& file, const char* keyword)
   }
 }
 
-inline void read_VTK_header(Text_file& file)
+// Whether the file is binary.
+inline bool read_VTK_header(Text_file& file)
 {
   std::string_view text;
   std::size_t line = 0;
@@ -210,22 +217,30 @@ inline void read_VTK_header(Text_file& file)
   Token format;
   if(!file.next_token(format))
     file.fail_truncated("expected ASCII or BINARY");
-  if(same_keyword(format.text, "BINARY"))
-    file.fail(format.line, "binary VTK is not supported (save it as ASCII)");
-  if(!same_keyword(format.text, "ASCII"))
+  const bool binary = same_keyword(format.text, "BINARY");
+  if(!binary && !same_keyword(format.text, "ASCII"))
     file.fail(format.line, "expected ASCII or BINARY, got " + quote_token(format.text));
   expect_VTK_keyword(file, "DATASET");
   expect_VTK_keyword(file, "UNSTRUCTURED_GRID");
+  return binary;
 }
 
-inline void read_VTK_points(Text_file& file, Mesh_file& mesh)
+inline void read_VTK_points(Text_file& file, Mesh_file& mesh, bool binary = false)
 {
-  expect_VTK_section(file, "POINTS");
+  expect_VTK_section(file, "POINTS", binary);
   Token count_token, type;
   if(!file.next_token(count_token) || !file.next_token(type))
     file.fail_truncated("expected 'POINTS count type'");
   const std::size_t count = to_size(file, count_token, "POINTS count");
   check_VTK_data_type(file, type);
+  if(binary) {
+    const std::vector<double> xyz =
+      read_VTK_binary_values(file, type, count <= std::size_t(-1) / 3 ? 3 * count : std::size_t(-1), "POINTS").values;
+    mesh.map.resize(count);
+    for(std::size_t i = 0; i < count; ++i)
+      mesh.map[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    return;
+  }
   mesh.map.reserve(file.sane_capacity(count));
   static const char* const axis[] = {"x", "y", "z"};
   for(std::size_t i = 0; i < count; ++i) {
@@ -245,28 +260,63 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count,
   Token size_token = next_VTK_value(file, "CELLS", i, count, "cells");
   if(same_keyword(size_token.text, "OFFSETS"))
     file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
-  const std::string what = "cell " + std::to_string(i);
+  const std::string what = VTK_cell_what(i);
   VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line};
-  if(cell.size != 3 && cell.size != 4 && cell.size != 8)
-    file.fail(cell.line, what + " has " + std::to_string(cell.size)
-                             + " vertices; only triangles (3), tetrahedra and quadrilaterals (4) and hexahedra (8) "
-                               "are supported");
+  std::string defect = VTK_vertex_count_defect(i, cell.size);
+  if(!defect.empty())
+    file.fail(cell.line, defect);
   for(std::size_t c = 0; c < cell.size; ++c)
     cell.ids[c] = to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what);
-  std::string defect = simplex_defect(cell.ids, static_cast<int>(cell.size), n, 0);
+  defect = VTK_vertex_defect(i, cell, n);
   if(!defect.empty())
-    file.fail(cell.line, what + ": " + defect);
+    file.fail(cell.line, defect);
   return cell;
 }
 
-inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_of_vertices)
+// Binary cells: `size` ints, each cell its vertex count and then its vertices.
+inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token& size_token, std::size_t count,
+                                                   std::size_t size, std::size_t number_of_vertices)
 {
-  Token keyword = expect_VTK_section(file, "CELLS");
+  const VTK_binary_block block = read_VTK_binary_values(file, Token{"int", size_token.line}, size, "CELLS");
+  const std::vector<double>& v = block.values;
+  std::vector<VTK_cell> cells;
+  cells.reserve((std::min)(count, size));
+  std::size_t at = 0;
+  for(std::size_t i = 0; i < count; ++i) {
+    if(at == size)
+      fail_at_byte(file, block.offset_of(at), "truncated: the CELLS block ends after " + std::to_string(i) + " of "
+                                                  + std::to_string(count) + " cells");
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0};
+    std::string defect = VTK_vertex_count_defect(i, cell.size);
+    if(defect.empty() && cell.size > size - at - 1)
+      defect = "truncated: the CELLS block ends inside " + VTK_cell_what(i);
+    for(std::size_t c = 0; c < cell.size && defect.empty(); ++c) {
+      const double id = v[at + 1 + c];
+      cell.ids[c] = id < 0 ? std::size_t(-1) : saturated_size(id);
+    }
+    if(defect.empty())
+      defect = VTK_vertex_defect(i, cell, number_of_vertices);
+    if(!defect.empty())
+      fail_at_byte(file, block.offset_of(at), defect);
+    at += 1 + cell.size;
+    cells.push_back(cell);
+  }
+  if(at != size)
+    fail_at_byte(file, block.offset_of(at), "CELLS announces a size of " + std::to_string(size) + " but its "
+                                                + std::to_string(count) + " cells use " + std::to_string(at) + " entries");
+  return cells;
+}
+
+inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_of_vertices, bool binary = false)
+{
+  Token keyword = expect_VTK_section(file, "CELLS", binary);
   Token count_token, size_token;
   if(!file.next_token(count_token) || !file.next_token(size_token))
     file.fail_truncated("expected 'CELLS count size'");
   const std::size_t count = to_size(file, count_token, "CELLS count");
   const std::size_t size = to_size(file, size_token, "CELLS size");
+  if(binary)
+    return read_VTK_binary_cells(file, size_token, count, size, number_of_vertices);
   std::vector<VTK_cell> cells;
   cells.reserve(file.sane_capacity(count));
   std::size_t used = 0;
@@ -280,24 +330,10 @@ inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_
   return cells;
 }
 
-inline int VTK_simplex_size(std::size_t type)
+inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh,
+                                bool binary = false)
 {
-  return type == 10 ? 4 : type == 5 ? 3 : 0;
-}
-
-inline int VTK_cell_size(std::size_t type)
-{
-  return type == 12 ? 8 : type == 9 ? 4 : 0;
-}
-
-inline std::string VTK_type_name(std::size_t type)
-{
-  return VTK_simplex_size(type) != 0 ? simplex_name(VTK_simplex_size(type)) : cell_name(VTK_cell_size(type));
-}
-
-inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh)
-{
-  expect_VTK_section(file, "CELL_TYPES");
+  expect_VTK_section(file, "CELL_TYPES", binary);
   Token count_token;
   if(!file.next_token(count_token))
     file.fail_truncated("expected the CELL_TYPES count");
@@ -306,39 +342,37 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
     file.fail(count_token.line, "CELL_TYPES has " + std::to_string(count) + " entries but CELLS has "
                                     + std::to_string(cells.size()));
   std::size_t first_type = 0;
+  if(binary) {
+    const VTK_binary_block types = read_VTK_binary_values(file, Token{"int", count_token.line}, count, "CELL_TYPES");
+    for(std::size_t i = 0; i < count; ++i) {
+      const std::string defect = add_VTK_element(mesh, i, types.values[i] < 0 ? 0 : saturated_size(types.values[i]),
+                                                 cells[i], first_type);
+      if(!defect.empty())
+        fail_at_byte(file, types.offset_of(i), defect);
+    }
+    return;
+  }
   for(std::size_t i = 0; i < count; ++i) {
     Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
-    const std::string what = "cell " + std::to_string(i);
-    const std::size_t type = to_size(file, t, "type of " + what);
-    const int k = VTK_simplex_size(type), c = VTK_cell_size(type);
-    if(k == 0 && c == 0)
-      file.fail(t.line, what + " has VTK type " + std::to_string(type)
-                            + "; only triangles (5), tetrahedra (10), quadrilaterals (9) and hexahedra (12) are "
-                              "supported");
-    if(i == 0)
-      first_type = type;
-    else if(type != first_type)
-      file.fail(t.line, "mixed cell types: " + what + " is a " + VTK_type_name(type) + " but cell 0 is a "
-                            + VTK_type_name(first_type) + "; only one element type is supported");
-    if(static_cast<std::size_t>(k + c) != cells[i].size)
-      file.fail(t.line, what + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
-                            + std::to_string(cells[i].size) + " vertices");
-    if(k != 0) {
-      mesh.simplex_size = k;
-      mesh.simplices.push_back({cells[i].ids[0], cells[i].ids[1], cells[i].ids[2], cells[i].ids[3]});
-      mesh.simplex_lines.push_back(cells[i].line);
-    } else {
-      mesh.cell_size = c;
-      mesh.cells.push_back(cells[i].ids);
-      mesh.cell_lines.push_back(cells[i].line);
-    }
+    const std::size_t type = to_size(file, t, "type of " + VTK_cell_what(i));
+    const std::string defect = add_VTK_element(mesh, i, type, cells[i], first_type);
+    if(!defect.empty())
+      file.fail(t.line, defect);
   }
 }
 
 // 'SCALARS fixed type [components]' (`header`: the line after SCALARS),
 // 'LOOKUP_TABLE name', then the flags.
+inline void read_VTK_lookup_table(Text_file& file, const std::string& what)
+{
+  expect_VTK_keyword(file, "LOOKUP_TABLE");
+  Token table;
+  if(!file.next_token(table))
+    file.fail_truncated("expected the LOOKUP_TABLE name of " + what);
+}
+
 inline void read_VTK_fixed_scalar(Text_file& file, const Token& scalars, const std::vector<Token>& header,
-                                  Mesh_file& mesh)
+                                  Mesh_file& mesh, bool binary)
 {
   const std::string what = VTK_fixed_name("point scalar");
   if(header.size() < 2 || header.size() > 3)
@@ -346,11 +380,8 @@ inline void read_VTK_fixed_scalar(Text_file& file, const Token& scalars, const s
   check_VTK_data_type(file, header[1], what);
   if(header.size() == 3 && to_size(file, header[2], "component count of " + what) != 1)
     file.fail(scalars.line, what + " has " + std::string(header[2].text) + " components; expected 1");
-  expect_VTK_keyword(file, "LOOKUP_TABLE");
-  Token table;
-  if(!file.next_token(table))
-    file.fail_truncated("expected the LOOKUP_TABLE name of " + what);
-  read_VTK_fixed_values(file, scalars.line, what, mesh);
+  read_VTK_lookup_table(file, what);
+  read_VTK_fixed_values(file, scalars.line, what, mesh, header[1], binary);
 }
 
 inline bool is_VTK_integer_type(const Token& type)
@@ -363,7 +394,7 @@ inline bool is_VTK_integer_type(const Token& type)
 // component, 'LOOKUP_TABLE name', then `count` numbers: a field of `block`.
 // Scalars of several components are skipped (false), as VTK_field holds one.
 inline bool read_VTK_scalar_field(Text_file& file, const Token& scalars, const std::vector<Token>& header,
-                                  const char* block, std::size_t count, VTK_fields& fields)
+                                  const char* block, std::size_t count, VTK_fields& fields, bool binary)
 {
   const std::string what = "SCALARS " + quote_token(header[0].text);
   if(header.size() < 2 || header.size() > 3)
@@ -371,35 +402,67 @@ inline bool read_VTK_scalar_field(Text_file& file, const Token& scalars, const s
   check_VTK_data_type(file, header[1], what);
   if(header.size() == 3 && to_size(file, header[2], "component count of " + what) != 1)
     return false;
-  expect_VTK_keyword(file, "LOOKUP_TABLE");
-  Token table;
-  if(!file.next_token(table))
-    file.fail_truncated("expected the LOOKUP_TABLE name of " + what);
+  read_VTK_lookup_table(file, what);
   VTK_field field{std::string(header[0].text), std::vector<double>(), is_VTK_integer_type(header[1])};
-  field.values.reserve(file.sane_capacity(count));
   // (the values write_VTK() refuses to write are refused: a field read writes back)
-  for(std::size_t i = 0; i < count; ++i) {
-    const Token t = next_VTK_value(file, block, i, count, "values");
-    double value = 0;
-    if(parse_double(t.text, value) != Number_status::OK)
-      value = to_double(file, t, what + " value " + std::to_string(i));   // throws, naming the value
-    if(!std::isfinite(value))
-      file.fail(t.line, what + " value " + std::to_string(i) + " is not finite: " + quote_token(t.text));
-    if(field.integer && value != std::floor(value))
-      file.fail(t.line, what + " value " + std::to_string(i) + " is not a whole number, but the type is " +
-                            quote_token(header[1].text));
-    field.values.push_back(value);
+  if(binary) {
+    const VTK_binary_block values = read_VTK_binary_values(file, header[1], count, what);
+    for(std::size_t i = 0; i < count; ++i) {
+      const std::string defect =
+        VTK_field_value_defect(what, i, values.values[i], field.integer, quote_token(header[1].text));
+      if(!defect.empty())
+        fail_at_byte(file, values.offset_of(i), defect);
+    }
+    field.values = values.values;
+  } else {
+    field.values.reserve(file.sane_capacity(count));
+    for(std::size_t i = 0; i < count; ++i) {
+      const Token t = next_VTK_value(file, block, i, count, "values");
+      double value = 0;
+      if(parse_double(t.text, value) != Number_status::OK)
+        value = to_double(file, t, what + " value " + std::to_string(i));   // throws, naming the value
+      if(field.integer && value != std::floor(value))   // (the message is built only on failure)
+        file.fail(t.line, VTK_field_value_defect(what, i, value, true, quote_token(header[1].text)));
+      field.values.push_back(value);
+    }
   }
-  // (whole numbers past an int's range are kept, as doubles)
-  if(field.integer && std::any_of(field.values.begin(), field.values.end(),
-                                  [](double v) { return std::abs(v) > 2147483647.; }))
-    field.integer = false;
-  for(const VTK_field& f : fields)
-    if(f.name == field.name)
-      file.fail(scalars.line, "a second " + std::string(block) + " " + what);
-  // (write_VTK() writes no CELL_DATA for no cell)
-  if(count > 0 || std::string(block) == "POINT_DATA") fields.push_back(std::move(field));
+  if(has_VTK_field(fields, field.name))
+    file.fail(scalars.line, "a second " + std::string(block) + " " + what);
+  add_VTK_field(fields, std::move(field), std::string(block) == "POINT_DATA");
   return true;
+}
+
+// In a binary file every attribute is read through, as its data may hold
+// any byte: those not kept (scalars of several components, vectors, normals,
+// tensors, texture coordinates) are skipped by their size.
+inline void skip_VTK_binary_attribute(Text_file& file, const Token& keyword, const std::vector<Token>& header,
+                                      std::size_t block_size)
+{
+  const std::string what = std::string(keyword.text) + " " + (header.empty() ? "" : quote_token(header[0].text));
+  std::size_t components = 0;
+  Token type;
+  bool line_read = true;   // (by Text_file::next_line(), but for SCALARS' LOOKUP_TABLE line)
+  if(same_keyword(keyword.text, "SCALARS") && (header.size() == 2 || header.size() == 3)) {
+    line_read = false;
+    components = header.size() == 3 ? to_size(file, header[2], "component count of " + what) : 1;
+    type = header[1];
+    read_VTK_lookup_table(file, what);
+  } else if((same_keyword(keyword.text, "VECTORS") || same_keyword(keyword.text, "NORMALS")) && header.size() == 2) {
+    components = 3;
+    type = header[1];
+  } else if(same_keyword(keyword.text, "TENSORS") && header.size() == 2) {
+    components = 9;
+    type = header[1];
+  } else if(same_keyword(keyword.text, "TEXTURE_COORDINATES") && header.size() == 3) {
+    components = to_size(file, header[1], "dimension of " + what);
+    type = header[2];
+  } else {
+    file.fail(keyword.line, "unexpected " + quote_token(keyword.text) + " line in binary attribute data (read: "
+                            "SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES, FIELD)");
+  }
+  if(components > 9 || block_size > std::size_t(-1) / 9)
+    file.fail(keyword.line, what + " has " + std::to_string(components) + " components");
+  read_VTK_binary_values(file, type, components * block_size, what, line_read);
 }
 
 // Point and cell attributes may follow.  Of them the reader takes the point
@@ -409,7 +472,7 @@ inline bool read_VTK_scalar_field(Text_file& file, const Token& scalars, const s
 // the other scalars of one component, as write_VTK() writes its fields; the
 // rest is skipped.
 inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* cell_fields = nullptr,
-                                VTK_fields* point_fields = nullptr)
+                                VTK_fields* point_fields = nullptr, bool binary = false)
 {
   Token token;
   if(!file.next_token(token))
@@ -435,40 +498,25 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* ce
         file.fail(count.line, block + " announces " + std::to_string(announced) + " values but the file has "
                                   + std::to_string(expected) + (in_point_data ? " points" : " cells"));
       block_size = expected;
-    } else if(in_point_data && same_keyword(token.text, "FIELD")) {
-      read_VTK_field_data(file, &mesh);
-    } else if(same_keyword(token.text, "SCALARS") && (in_point_data || (in_cell_data && cell_fields != nullptr))) {
-      std::vector<Token> header;   // the rest of the SCALARS line
+    } else if((in_point_data || binary) && same_keyword(token.text, "FIELD")) {
+      read_VTK_field_data(file, in_point_data ? &mesh : nullptr, binary);
+    } else if(binary && !(in_point_data || in_cell_data)) {
+      file.fail(token.line, "unexpected " + quote_token(token.text) + " before POINT_DATA or CELL_DATA");
+    } else if(binary || (same_keyword(token.text, "SCALARS") && (in_point_data || (in_cell_data && cell_fields != nullptr)))) {
+      std::vector<Token> header;   // the rest of the line
       if(!file.next_line(header) || header[0].line != token.line)
-        file.fail(token.line, "expected 'SCALARS name type [components]'");
+        file.fail(token.line, "expected '" + std::string(token.text) + " name type [components]'");
+      const bool scalars = same_keyword(token.text, "SCALARS");
       VTK_fields* fields = in_point_data ? point_fields : cell_fields;
-      if(in_point_data && header[0].text == VTK_fixed_field)
-        read_VTK_fixed_scalar(file, token, header, mesh);
-      else if(fields != nullptr)
-        read_VTK_scalar_field(file, token, header, in_point_data ? "POINT_DATA" : "CELL_DATA", block_size, *fields);
+      if(scalars && in_point_data && header[0].text == VTK_fixed_field)
+        read_VTK_fixed_scalar(file, token, header, mesh, binary);
+      else if(!(scalars && fields != nullptr
+                && read_VTK_scalar_field(file, token, header, in_point_data ? "POINT_DATA" : "CELL_DATA", block_size,
+                                         *fields, binary))
+              && binary)
+        skip_VTK_binary_attribute(file, token, header, block_size);
     }
   } while(file.next_token(token));
-}
-
-inline void check_VTK_fields(const std::string& path, const VTK_fields& fields, std::size_t size,
-                             const char* kind)
-{
-  for(const VTK_field& field : fields) {
-    const std::string what = std::string(kind) + " field '" + field.name + "'";
-    if(field.name.empty() || field.name.find_first_of(" \t\r\n") != std::string::npos)
-      throw Write_error(path, what + ": the name is empty or has blanks");
-    if(field.values.size() != size)
-      throw Write_error(path, what + " has " + std::to_string(field.values.size()) + " values, expected "
-                                  + std::to_string(size));
-    // VTK's own reader cannot parse "nan" or "inf".
-    for(std::size_t i = 0; i < size; ++i) {
-      const double v = field.values[i];
-      if(!std::isfinite(v))
-        throw Write_error(path, what + " value " + std::to_string(i) + " is not finite");
-      if(field.integer && !(v == std::floor(v) && std::abs(v) <= 2147483647.))
-        throw Write_error(path, what + " value " + std::to_string(i) + " is not an int");
-    }
-  }
 }
 
 // No CELL_DATA for no cell (a file of no phantom has no cells to attach
@@ -491,36 +539,6 @@ inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::s
   }
 }
 
-// The point fields as written: first the mesh's fixed vertices, if it has
-// any list of them, as the scalar 'fixed' that read_VTK() reads back, unless
-// `given` holds a field of that name; that one must then read back as the
-// same vertices.
-inline VTK_fields VTK_point_fields(const std::string& path, const Mesh_file& mesh, const VTK_fields& given,
-                                   std::size_t number_of_points)
-{
-  std::vector<double> flags(number_of_points, 0.);
-  for(std::size_t v : mesh.fixed)
-    flags[v] = 1;
-  const auto named_fixed = [](const VTK_field& field) { return field.name == VTK_fixed_field; };
-  const auto fixed = std::find_if(given.begin(), given.end(), named_fixed);
-  if(fixed == given.end()) {
-    if(!mesh.has_fixed)
-      return given;
-    VTK_fields fields{VTK_field{VTK_fixed_field, std::move(flags), true}};
-    fields.insert(fields.end(), given.begin(), given.end());
-    return fields;
-  }
-  const std::string what = VTK_fixed_name("point field");
-  for(std::size_t v = 0; v < number_of_points; ++v) {
-    const double flag = fixed->values[v];
-    if(flag != 0 && flag != 1)
-      throw Write_error(path, what + " value " + std::to_string(v) + " is neither 0 nor 1");
-    if(mesh.has_fixed && flag != flags[v])
-      throw Write_error(path, what + " disagrees with the mesh's fixed vertices at point " + std::to_string(v));
-  }
-  return given;
-}
-
 inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 {
   if(!mesh.cells.empty()) {
@@ -534,7 +552,7 @@ inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
     }
     out << "CELL_TYPES " << mesh.cells.size() << '\n';
     for(std::size_t i = 0; i < mesh.cells.size(); ++i)
-      out << (c == 8 ? "12\n" : "9\n");
+      out << VTK_type_of(mesh) << '\n';
     return;
   }
   const std::size_t k = static_cast<std::size_t>(mesh.simplex_size);
@@ -547,7 +565,7 @@ inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
   }
   out << "CELL_TYPES " << mesh.simplices.size() << '\n';
   for(std::size_t i = 0; i < mesh.simplices.size(); ++i)
-    out << (k == 4 ? "10\n" : "5\n");
+    out << VTK_type_of(mesh) << '\n';
 }
 
 } // namespace internal

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Remakes the .vtu and legacy .vtk files test_vtu reads, with meshio (Debian's
+# python3-meshio 5.0.0 made the files kept here): two tetrahedra, a fan of
+# triangles, quadrilaterals and one hexahedron, each with the point array
+# `fixed` and a cell array `quality`, written as .vtu in ASCII, base64,
+# base64 + zlib and base64 + LZMA (which the reader refuses), and the
+# tetrahedra as legacy VTK 4.2, ASCII and binary.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")"
+/usr/bin/python3 - << 'PYTHON'
+import meshio
+import numpy as np
+
+meshes = {
+    "tets": ([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]], "tetra", [[0, 1, 2, 3], [1, 2, 3, 4]]),
+    "triangles": ([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.25, 0]], "triangle",
+                  [[0, 1, 4], [1, 2, 4], [2, 3, 4]]),
+    "quads": ([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1.5, 0], [2, 1, 0]], "quad",
+              [[0, 1, 4, 3], [1, 2, 5, 4]]),
+    "hex": ([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1.25]],
+            "hexahedron", [[0, 1, 2, 3, 4, 5, 6, 7]]),
+}
+for name, (points, kind, cells) in meshes.items():
+    points = np.array(points, dtype=float) / 3.0   # not exact in decimal: the encodings must keep every bit
+    fixed = np.zeros(len(points), dtype=np.int32)
+    fixed[0] = 1
+    quality = np.arange(len(cells), dtype=float) + 0.5
+    mesh = meshio.Mesh(points, [(kind, np.array(cells))], point_data={"fixed": fixed},
+                       cell_data={"quality": [quality]})
+    meshio.write(f"{name}-ascii.vtu", mesh, binary=False)
+    meshio.write(f"{name}-base64.vtu", mesh, binary=True, compression=None)
+    meshio.write(f"{name}-zlib.vtu", mesh, binary=True, compression="zlib")
+    if name == "tets":
+        meshio.write(f"{name}-lzma.vtu", mesh, binary=True, compression="lzma")
+        meshio.vtk.write(f"{name}-ascii.vtk", mesh, fmt_version="4.2", binary=False)
+        meshio.vtk.write(f"{name}-binary.vtk", mesh, fmt_version="4.2", binary=True)
+PYTHON
