@@ -48,7 +48,7 @@ bool same_points(const std::vector<Point>& a, const std::vector<Point>& b)
 
 bool same_mesh(const Mesh_file& a, const Mesh_file& b)
 {
-  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size
+  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.rest_dimension == b.rest_dimension && same_points(a.rest, b.rest)
          && a.map_dimension == b.map_dimension && same_points(a.map, b.map) && a.has_fixed == b.has_fixed
          && a.fixed == b.fixed;
@@ -249,6 +249,55 @@ void test_planar_and_cells()
   check_round_trip(__LINE__, h, "hex-back.msh");
 }
 
+// Prisms (type 6) and pyramids (type 7), alone or with tetrahedra and
+// hexahedra: mixed cells in the order of the file, written back as blocks of
+// consecutive elements of one type.
+void test_mixed_cells()
+{
+  Mesh_file mixed = test::mixed_cell_mesh();
+  mixed.has_fixed = true;
+  mixed.fixed = {0, 11};
+  check_round_trip(__LINE__, mixed, "mixed.msh");
+  const std::string text = test::read_text(temp_path("mixed.msh"));
+  CHECK(text.find("$Elements\n6 6 1 6\n3 1 5 1\n1 1 2 3 4 5 6 7 8\n3 1 7 1\n2 5 6 7 8 9\n3 1 6 1\n3 2 10 3 6 11 7\n"
+                  "3 1 4 1\n4 6 11 7 12\n0 1 15 1\n5 1\n0 2 15 1\n6 12\n$EndElements\n") != std::string::npos);
+  // runs of one type share a block
+  Mesh_file runs = mixed;
+  runs.cells = {mixed.cells[3], mixed.cells[3], mixed.cells[2], mixed.cells[3]};
+  runs.cell_sizes = {4, 4, 6, 4};
+  runs.has_fixed = false;
+  runs.fixed.clear();
+  check_round_trip(__LINE__, runs, "runs.msh");
+  CHECK(test::read_text(temp_path("runs.msh")).find("$Elements\n3 4 1 4\n3 1 4 2\n") != std::string::npos);
+
+  // MSH 2.2: a prism and a pyramid over a boundary triangle and a line, in the order of the file.
+  const std::string nodes = "$Nodes\n7\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 0 1\n6 0 1 1\n7 0 0 2\n$EndNodes\n";
+  const Mesh_file v2 = read(__LINE__, write_text("prism-22.msh",
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n" + nodes + "$Elements\n4\n1 1 0 1 2\n2 2 0 1 2 3\n"
+    "3 6 2 0 1 1 2 3 4 5 6\n4 7 2 0 1 4 5 2 1 7\n$EndElements\n"));
+  CHECK(v2.cell_size == Mesh_file::mixed_cells && v2.simplices.empty() && v2.map_dimension == 3
+        && (v2.cell_sizes == std::vector<unsigned char>{6, 5}));
+  CHECK(v2.cells.size() == 2 && (v2.cells[0] == std::array<std::size_t, 8>{0, 1, 2, 3, 4, 5, 0, 0})
+        && (v2.cells[1] == std::array<std::size_t, 8>{3, 4, 1, 0, 6, 0, 0, 0})
+        && (v2.cell_lines == std::vector<std::size_t>{18, 19}));
+  // MSH 4.1: a pyramid block, then a tetrahedron block: mixed; a tetrahedron block alone: simplices.
+  const std::string head_41 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 5 1 5\n3 1 0 5\n1\n2\n3\n4\n5\n"
+                              "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n$EndNodes\n";   // to line 17
+  const Mesh_file v4 = read(__LINE__, write_text("pyramid-41.msh", head_41 +
+    "$Elements\n2 2 1 2\n3 1 7 1\n1 1 2 3 4 5\n3 1 4 1\n2 1 2 3 5\n$EndElements\n"));
+  CHECK(v4.cell_size == Mesh_file::mixed_cells && (v4.cell_sizes == std::vector<unsigned char>{5, 4})
+        && (v4.cells[0] == std::array<std::size_t, 8>{0, 1, 2, 3, 4, 0, 0, 0})
+        && (v4.cells[1] == std::array<std::size_t, 8>{0, 1, 2, 4, 0, 0, 0, 0})
+        && (v4.cell_lines == std::vector<std::size_t>{21, 23}));
+  const Mesh_file tet = read(__LINE__, write_text("tet-41.msh", head_41 +
+    "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 5\n$EndElements\n"));
+  CHECK(tet.simplex_size == 4 && tet.simplices.size() == 1 && tet.cells.empty() && tet.cell_sizes.empty());
+  CHECK_READ_ERROR("pyramid-repeat.msh", head_41 + "$Elements\n1 1 1 1\n3 1 7 1\n1 1 2 3 4 1\n$EndElements\n", 21,
+                   "element 1 (pyramid) has node 1 twice");
+  CHECK_READ_ERROR("prism-range.msh", head_41 + "$Elements\n1 1 1 1\n3 1 6 1\n8 1 2 3 4 5 6\n$EndElements\n", 21,
+                   "element 8 (prism) refers to node 6, which $Nodes does not list");
+}
+
 // Shortest exact text: the bits of awkward numbers come back.
 void test_exact_numbers()
 {
@@ -289,21 +338,20 @@ void test_errors()
                    "expected $EndNodes, found '$Elements'");
   CHECK_READ_ERROR("no-end-at-all.msh", head + "$Nodes\n1\n1 0 0 0\n", 6, "truncated: no $EndNodes");
   CHECK_READ_ERROR("unknown-node.msh", head + nodes + "$Elements\n1\n7 4 0 1 2 3 99\n$EndElements\n", 13,
-                   "element 7 refers to node 99, which $Nodes does not list");
+                   "element 7 (tetrahedron) refers to node 99, which $Nodes does not list");
   CHECK_READ_ERROR("duplicate-node.msh", head + "$Nodes\n3\n5 0 0 0\n6 1 0 0\n5 0 1 0\n$EndNodes\n", 8,
                    "node tag 5 appears twice");
   CHECK_READ_ERROR("repeated-node.msh", head + nodes + "$Elements\n1\n7 4 0 1 2 3 3\n$EndElements\n", 13,
                    "element 7 (tetrahedron) has node 3 twice");
   CHECK_READ_ERROR("prism.msh", head + nodes + "$Elements\n2\n1 4 0 1 2 3 4\n9 6 0 1 2 3 4 1 2\n$EndElements\n",
-                   14, "element 9 is a prism (type 6): prisms are not supported yet");
+                   14, "element 9 (prism) has node 1 twice");
+  CHECK_READ_ERROR("prism-node.msh", head + nodes + "$Elements\n2\n1 4 0 1 2 3 4\n9 6 0 1 2 3 4 5 6\n$EndElements\n",
+                   14, "element 9 (prism) refers to node 5, which $Nodes does not list");
+  CHECK_READ_ERROR("pyramid13.msh", head + nodes + "$Elements\n1\n3 19 0 1 2 3 4 1 2 3 4 1 2 3 4 1\n$EndElements\n",
+                   13, "element 3 is a 13-node second order pyramid (type 19)");
   CHECK_READ_ERROR("tet10.msh", head + nodes + "$Elements\n1\n3 11 0 1 2 3 4 1 2 3 4 1 2\n$EndElements\n", 13,
                    "element 3 is a 10-node second order tetrahedron (type 11): higher-order elements are not "
                    "supported");
-  CHECK_READ_ERROR("mixed.msh",
-                   head + "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n"
-                   "$EndNodes\n"
-                   "$Elements\n2\n1 4 0 1 2 4 5\n2 5 0 1 2 3 4 5 6 7 8\n$EndElements\n",
-                   18, "mixed element types: element 2 is a hexahedron but element 1 is a tetrahedron");
   CHECK_READ_ERROR("mixed-2d.msh", head + nodes + "$Elements\n2\n1 3 0 1 2 3 4\n2 2 0 1 2 3\n$EndElements\n", 14,
                    "element 2 is a triangle but element 1 is a quadrangle");
   CHECK_READ_ERROR("version3.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", 2,
@@ -333,7 +381,9 @@ void test_errors()
   Binary prism;
   prism.text("$MeshFormat\n4.1 1 8\n").i32(1).text("\n$EndMeshFormat\n$Nodes\n").u64(0).u64(0).u64(0).u64(0);
   prism.text("\n$EndNodes\n$Elements\n").u64(1).u64(1).u64(5).u64(5).i32(3).i32(1).i32(6).u64(1).u64(5);
-  CHECK_READ_ERROR("binary-prism.msh", prism.bytes, 0, "element 5 is a prism (type 6)");
+  CHECK_READ_ERROR("binary-prism.msh", prism.bytes, 0, "truncated: the file ends before the node 1 of element 5");
+  prism.u64(1);   // a node that $Nodes (empty) does not list
+  CHECK_READ_ERROR("binary-prism-node.msh", prism.bytes, 0, "element 5 (prism) refers to node 1, which $Nodes");
 }
 
 // Files from a real Gmsh (data/gmsh/make_fixtures.sh): the same box in four
@@ -380,6 +430,25 @@ void test_gmsh_files(const fs::path& folder)
     CHECK(det > 0);
   }
   check_round_trip(__LINE__, hexes, "hexes-back.msh");
+
+  // Gmsh's prisms, hexahedra, tetrahedra and pyramids (an extruded, recombined mesh under tetrahedra):
+  // mixed cells in the order of the file, each positively oriented in Mesh_file's vertex orders.
+  // (MSH 2.2 lists the same cells, by type: the tetrahedra first.)
+  const auto check_solids = [&](const Mesh_file& m, unsigned char first, const char* name) {
+    CHECK_MESSAGE(m.cell_size == Mesh_file::mixed_cells && m.simplices.empty() && m.map_dimension == 3
+                  && !m.cell_sizes.empty() && m.cell_sizes.front() == first, name);
+    std::array<std::size_t, 9> count = {};
+    for(unsigned char size : m.cell_sizes)
+      ++count[size];
+    CHECK_MESSAGE(count[6] == 16 && count[8] == 8 && count[4] > 0 && count[5] > 0
+                  && count[4] + count[5] + count[6] + count[8] == m.cells.size(), name);
+    for(std::size_t c = 0; c < m.cells.size(); ++c)
+      CHECK_MESSAGE(test::corner_volume(m, c) > 0, std::string(name) + ": cell " + std::to_string(c));
+  };
+  const Mesh_file solids = read(__LINE__, (folder / "solids-41.msh").string());
+  check_solids(solids, 6, "solids-41.msh");
+  check_solids(read(__LINE__, (folder / "solids-22.msh").string()), 4, "solids-22.msh");
+  check_round_trip(__LINE__, solids, "solids-back.msh");
 }
 
 } // namespace
@@ -390,6 +459,7 @@ int main()
   test_versions();
   test_planar_and_cells();
   test_exact_numbers();
+  test_mixed_cells();
   test_errors();
   test::check_fixtures(__FILE__, __LINE__, MU_GMSH_FIXTURES, test_gmsh_files);
   return test::finish("test_gmsh", temp_dir);

@@ -72,7 +72,7 @@ bool same_points(const std::vector<Point>& a, const std::vector<Point>& b)
 
 bool same_mesh(const Mesh_file& a, const Mesh_file& b)
 {
-  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size
+  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.rest_dimension == b.rest_dimension
          && same_points(a.rest, b.rest) && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
          && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
@@ -400,17 +400,20 @@ void test_vtk_errors()
                    "mixed cell types: cell 1 is a tetrahedron but cell 0 is a quadrilateral");
   CHECK_READ_ERROR(read_vtk, "quad-as-hex.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n12\n", 14,
                    "cell 0 has type 12 (hexahedron) but 4 vertices");
-  CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\n", 12, "cell 0: vertex 0 is repeated");
-  CHECK_READ_ERROR(read_vtk, "hexagon.vtk", head + "CELLS 1 7\n6 0 1 2 3 4 0\n", 12, "cell 0 has 6 vertices");
+  // (the vertices of a cell are checked with its type, which names it, but the error is on the cell's line)
+  CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\nCELL_TYPES 1\n12\n", 12,
+                   "cell 0: vertex 0 is repeated (hexahedron)");
+  CHECK_READ_ERROR(read_vtk, "heptagon.vtk", head + "CELLS 1 8\n7 0 1 2 3 4 0 1\n", 12, "cell 0 has 7 vertices");
   CHECK_READ_ERROR(read_vtk, "size.vtk", head + "CELLS 2 9\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n", 11,
                    "CELLS announces a size of 9");
   CHECK_READ_ERROR(read_vtk, "typecount.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n", 13,
                    "CELL_TYPES has 2 entries but CELLS has 1");
   CHECK_READ_ERROR(read_vtk, "typesize.vtk", head + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n10\n", 14,
                    "cell 0 has type 10 (tetrahedron) but 3 vertices");
-  CHECK_READ_ERROR(read_vtk, "range.vtk", head + "CELLS 1 5\n4 0 1 2 5\n", 12,
-                   "cell 0: vertex index 5 is out of range [0, 4]");
-  CHECK_READ_ERROR(read_vtk, "repeat.vtk", head + "CELLS 1 5\n4 0 1 2 2\n", 12, "cell 0: vertex 2 is repeated");
+  CHECK_READ_ERROR(read_vtk, "range.vtk", head + "CELLS 1 5\n4 0 1 2 5\nCELL_TYPES 1\n10\n", 12,
+                   "cell 0: vertex index 5 is out of range [0, 4] (tetrahedron)");
+  CHECK_READ_ERROR(read_vtk, "repeat.vtk", head + "CELLS 1 5\n4 0 1 2 2\nCELL_TYPES 1\n9\n", 12,
+                   "cell 0: vertex 2 is repeated (quadrilateral)");
   CHECK_READ_ERROR(
       read_vtk, "fewpoints.vtk",
       "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n0 0 0\n1 0 0\nCELLS 1 4\n", 8,
@@ -444,6 +447,117 @@ void test_vtk_errors()
       read_vtk, "huge.vtk",
       "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 99999999999999 double\n0 0 0\n", 6,
       "truncated: the POINTS block ends after 1 of 99999999999999");
+}
+
+// Pyramids, prisms and meshes of several solid cell kinds (Mesh_file::mixed_cells).
+void test_mixed_cells()
+{
+  const Mesh_file mixed = test::mixed_cell_mesh();
+  check_round_trip(__LINE__, "mixed.vtk", mixed, mixed);
+  // MEDIT writes a block per kind: the cells come back grouped, Tetrahedra to Hexahedra
+  Mesh_file grouped = mixed;
+  grouped.cells = {mixed.cells[3], mixed.cells[1], mixed.cells[2], mixed.cells[0]};
+  grouped.cell_sizes = {4, 5, 6, 8};
+  check_round_trip(__LINE__, "mixed.mesh", mixed, grouped);
+  check_round_trip(__LINE__, "grouped.mesh", grouped, grouped);
+  CHECK(read_text(temp_path("grouped.mesh")).find("Tetrahedra\n1\n6 11 7 12 0\n\nPyramids\n1\n5 6 7 8 9 0\n\n"
+                                                  "Prisms\n1\n2 10 3 6 11 7 0\n\nHexahedra\n1\n1 2 3 4 5 6 7 8 0\n")
+        != std::string::npos);
+
+  // A VTK wedge (type 13) lists its bottom clockwise seen from the top: a b c d e f is the prism a c b d f e.
+  const std::string points = "# vtk DataFile Version 2.0\nwedge\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                             "POINTS 7 double\n0 0 0\n0 1 0\n1 0 0\n0 0 1\n0 1 1\n1 0 1\n0 0 2\n";   // to line 12
+  const std::string cells = "CELLS 2 12\n6 0 1 2 3 4 5\n4 3 5 4 6\nCELL_TYPES 2\n13\n10\n";
+  const Mesh_file wedge = IO::read_VTK(write_text("wedge.vtk", points + cells));
+  CHECK(wedge.cell_size == Mesh_file::mixed_cells && wedge.simplices.empty()
+        && (wedge.cell_sizes == std::vector<unsigned char>{6, 4}));
+  CHECK(wedge.cells.size() == 2 && (wedge.cells[0] == std::array<std::size_t, 8>{0, 2, 1, 3, 5, 4, 0, 0})
+        && (wedge.cells[1] == std::array<std::size_t, 8>{3, 5, 4, 6, 0, 0, 0, 0}));
+  CHECK((wedge.cell_lines == std::vector<std::size_t>{14, 15}) && wedge.map_dimension == 3);
+  IO::write_VTK(temp_path("wedge-out.vtk"), wedge);
+  CHECK(read_text(temp_path("wedge-out.vtk")).find("\nCELLS 2 12\n6 0 1 2 3 4 5\n4 3 5 4 6\nCELL_TYPES 2\n13\n10\n")
+        != std::string::npos);
+  // a wedge alone, flat (every z 0): still a solid cell, of a 3D map
+  const Mesh_file flat = IO::read_VTK(write_text("flat-wedge.vtk",
+    "# vtk DataFile Version 2.0\nflat\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 6 double\n0 0 0\n1 0 0\n0 1 0\n"
+    "0 0 0\n1 0 0\n0 1 0\nCELLS 1 7\n6 0 1 2 3 4 5\nCELL_TYPES 1\n13\n"));
+  CHECK(flat.cell_size == Mesh_file::mixed_cells && flat.map_dimension == 3
+        && (flat.cells[0] == std::array<std::size_t, 8>{0, 2, 1, 3, 5, 4, 0, 0}));
+  // only tetrahedra: simplices; only hexahedra: cells of size 8; a pyramid and tetrahedra: mixed
+  const std::string five = "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                           "POINTS 5 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n";   // to line 10
+  const Mesh_file tets = IO::read_VTK(write_text("two-tets.vtk", five + "CELLS 2 10\n4 0 1 2 4\n4 0 2 3 4\n"
+                                                                         "CELL_TYPES 2\n10\n10\n"));
+  CHECK(tets.simplex_size == 4 && tets.simplices.size() == 2 && tets.cells.empty() && tets.cell_sizes.empty());
+  const Mesh_file pyramid = IO::read_VTK(write_text("pyramid.vtk", five + "CELLS 1 6\n5 0 1 2 3 4\nCELL_TYPES 1\n14\n"));
+  CHECK(pyramid.cell_size == Mesh_file::mixed_cells && (pyramid.cell_sizes == std::vector<unsigned char>{5})
+        && (pyramid.cells[0] == std::array<std::size_t, 8>{0, 1, 2, 3, 4, 0, 0, 0}));
+
+  // Bad input names the kind, the cell and the line.
+  CHECK_READ_ERROR(read_vtk, "pyramid-4.vtk", five + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n14\n", 14,
+                   "cell 0 has type 14 (pyramid) but 4 vertices");
+  CHECK_READ_ERROR(read_vtk, "wedge-repeat.vtk", points + "CELLS 2 12\n4 3 5 4 6\n6 0 1 2 3 4 1\nCELL_TYPES 2\n10\n13\n",
+                   15, "cell 1: vertex 1 is repeated (prism)");
+  CHECK_READ_ERROR(read_vtk, "wedge-range.vtk", points + "CELLS 1 7\n6 0 1 2 3 4 7\nCELL_TYPES 1\n13\n", 14,
+                   "cell 0: vertex index 7 is out of range [0, 6] (prism)");
+  CHECK_READ_ERROR(read_vtk, "wedge-triangle.vtk", points + "CELLS 2 11\n6 0 1 2 3 4 5\n3 3 4 5\nCELL_TYPES 2\n13\n5\n",
+                   18, "mixed cell types: cell 1 is a triangle but cell 0 is a prism");
+  const std::string medit_head = "MeshVersionFormatted 2\nDimension 3\nVertices\n6\n0 0 0 0\n1 0 0 0\n0 1 0 0\n"
+                                 "0 0 1 0\n1 0 1 0\n0 1 1 0\n";   // to line 10
+  CHECK_READ_ERROR(read_medit, "prism-2d.mesh", "MeshVersionFormatted 2\nDimension 2\nPrisms\n0\n", 3,
+                   "Prisms in a mesh of Dimension 2");
+  CHECK_READ_ERROR(read_medit, "pyramid-2d.mesh", "MeshVersionFormatted 2\nDimension 2\nPyramids\n0\n", 3,
+                   "Pyramids in a mesh of Dimension 2");
+  CHECK_READ_ERROR(read_medit, "pyramid-count.mesh", medit_head + "Pyramids\n3\n1 2 3 4 5 0\n", 13,
+                   "truncated: the Pyramids block ends after 1 of 3 entries");
+  CHECK_READ_ERROR(read_medit, "prism-repeat.mesh", medit_head + "Prisms\n2\n1 2 3 4 5 6 0\n1 2 3 4 5 2 0\nEnd\n",
+                   14, "prism 2: vertex 2 is repeated");
+  CHECK_READ_ERROR(read_medit, "pyramid-range.mesh", medit_head + "Pyramids\n1\n1 2 3 4 7 0\nEnd\n", 13,
+                   "pyramid 1: vertex index 7 is out of range [1, 6]");
+
+  // MEDIT: Pyramids, Prisms and Tetrahedra read in the order of their blocks; the Triangles are the boundary.
+  const Mesh_file blocks = IO::read_MEDIT(write_text("blocks.mesh", medit_head +
+    "Triangles\n1\n1 2 3 0\nPrisms\n1\n1 2 3 4 5 6 0\nTetrahedra\n1\n4 5 6 1 0\nPyramids\n1\n1 2 5 4 6 0\nEnd\n"));
+  CHECK(blocks.cell_size == Mesh_file::mixed_cells && blocks.simplices.empty()
+        && (blocks.cell_sizes == std::vector<unsigned char>{6, 4, 5}));
+  CHECK(blocks.cells.size() == 3 && (blocks.cells[0] == std::array<std::size_t, 8>{0, 1, 2, 3, 4, 5, 0, 0})
+        && (blocks.cells[1] == std::array<std::size_t, 8>{3, 4, 5, 0, 0, 0, 0, 0})
+        && (blocks.cells[2] == std::array<std::size_t, 8>{0, 1, 4, 3, 5, 0, 0, 0}));
+  CHECK((blocks.cell_lines == std::vector<std::size_t>{16, 19, 22}) && blocks.map_dimension == 3);
+  const Mesh_file tets_and_hexes = IO::read_MEDIT(write_text("tets-and-hexes.mesh",
+    "MeshVersionFormatted 2\nDimension 3\nVertices\n9\n0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\n0 0 1 0\n1 0 1 0\n"
+    "1 1 1 0\n0 1 1 0\n0 0 2 0\nHexahedra\n1\n1 2 3 4 5 6 7 8 0\nTetrahedra\n1\n5 6 8 9 0\nEnd\n"));
+  CHECK(tets_and_hexes.cell_size == Mesh_file::mixed_cells
+        && (tets_and_hexes.cell_sizes == std::vector<unsigned char>{8, 4}));
+
+  // Writers: a malformed mixed mesh, and formats of faces only.
+  Mesh_file bad = mixed;
+  bad.cell_sizes.pop_back();
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("bad-sizes.vtk"), bad), "cell_sizes has 3 entries but there are 4 cells");
+  bad = mixed;
+  bad.cell_sizes[1] = 7;
+  CHECK_WRITE_ERROR(IO::write_GMSH(temp_path("bad-size.msh"), bad), "cell 1 has 7 vertices");
+  bad = mixed;
+  bad.cells[2][5] = 1;
+  CHECK_WRITE_ERROR(IO::write_MEDIT(temp_path("bad-prism.mesh"), bad), "prism 2: vertex 1 is repeated");
+  bad = mixed;
+  bad.cells[1][4] = 12;
+  CHECK_WRITE_ERROR(IO::write_VTU(temp_path("bad-pyramid.vtu"), bad), "pyramid 1: vertex index 12 is out of range");
+  bad = tets_and_hexes;
+  bad.cell_size = 8;
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("sizes-of-hexes.vtk"), bad), "but cell_size is 8, not mixed_cells");
+  bad = mixed;
+  bad.map_dimension = 2;
+  for(Point& p : bad.map) p[2] = 0;
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("flat-mixed.vtk"), bad), "cells of mixed kinds need 3D positions");
+  CHECK_WRITE_ERROR(IO::write_OFF(temp_path("mixed-cells.off"), mixed), "OFF stores faces only, not cells of mixed kinds");
+  CHECK_WRITE_ERROR(IO::write_OBJ(temp_path("mixed.obj"), mixed), "OBJ stores faces only, not cells of mixed kinds");
+  Mesh_file with_rest = mixed;
+  with_rest.rest = mixed.map;
+  with_rest.rest_dimension = 3;
+  CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("mixed.input"), with_rest), "holds simplices only");
+  for(const char* name : {"bad-sizes.vtk", "bad-size.msh", "bad-prism.mesh", "mixed-cells.off", "mixed.input"})
+    CHECK_MESSAGE(!fs::exists(temp_path(name)), name);
 }
 
 // The fields write_VTK() writes read back by name, integer or not; scalars of
@@ -576,11 +690,8 @@ void test_medit_errors()
                    "hexahedron 1: vertex 1 is repeated");
   CHECK_READ_ERROR(read_medit, "hex2d.mesh", "MeshVersionFormatted 2\nDimension 2\nHexahedra\n0\n", 3,
                    "Hexahedra in a mesh of Dimension 2");
-  CHECK_READ_ERROR(read_medit, "mixed-volume.mesh", head + "Tetrahedra\n1\n1 2 3 4 0\nHexahedra\n1\n1 2 3 4 1 2 3 4 0\n", 12,
-                   "mixed cell kinds: Hexahedra and Tetrahedra (line 9)");
   CHECK_READ_ERROR(read_medit, "mixed-faces.mesh", head + "Quadrilaterals\n1\n1 2 3 4 0\nTriangles\n1\n1 2 3 0\n", 9,
                    "mixed cell kinds: Quadrilaterals and Triangles (line 12)");
-  CHECK_READ_ERROR(read_medit, "prism.mesh", head + "Prisms\n1\n1 2 3 4 1 2 0\n", 9, "Prisms are not supported");
   {
     // a hexahedral mesh with its boundary quadrilaterals: the hexahedra are the mesh
     const Mesh_file hex = IO::read_MEDIT(write_text("hex-and-faces.mesh",
@@ -1075,6 +1186,7 @@ int main(int argc, char** argv)
   test_input_errors();
   test_off_errors();
   test_vtk_errors();
+  test_mixed_cells();
   test_vtk_fixed_flags();
   test_vtk_fields_read_back();
   test_medit_errors();

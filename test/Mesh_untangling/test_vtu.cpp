@@ -47,7 +47,7 @@ bool same_points(const std::vector<Point>& a, const std::vector<Point>& b)
 
 bool same_mesh(const Mesh_file& a, const Mesh_file& b)
 {
-  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size
+  return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
          && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
 }
@@ -130,6 +130,15 @@ Mesh_file quads()
   return m;
 }
 
+// One cell of each solid kind, with fixed vertices.
+Mesh_file mixed()
+{
+  Mesh_file m = test::mixed_cell_mesh();
+  m.has_fixed = true;
+  m.fixed = {0, 11};
+  return m;
+}
+
 Mesh_file hexes()
 {
   Mesh_file m;
@@ -145,7 +154,7 @@ Mesh_file hexes()
 void test_round_trips()
 {
   const std::vector<std::pair<std::string, Mesh_file>> meshes = {
-    {"tets", tets()}, {"triangles", triangles()}, {"quads", quads()}, {"hexes", hexes()}};
+    {"tets", tets()}, {"triangles", triangles()}, {"quads", quads()}, {"hexes", hexes()}, {"mixed", mixed()}};
   for(const auto& [name, mesh] : meshes) {
     const std::size_t elements = mesh.simplices.size() + mesh.cells.size();
     IO::VTK_fields cell_fields = {{"quality", std::vector<double>(elements, 0.1), false},
@@ -178,6 +187,31 @@ void test_round_trips()
   CHECK(text.find("byte_order=\"LittleEndian\"") != std::string::npos);
   CHECK(text.find("<AppendedData encoding=\"raw\">") != std::string::npos);
   CHECK(text.find("<DataArray type=\"Int32\" Name=\"fixed\"") != std::string::npos);
+  // Mixed cells: one type per cell, the prism as a VTK wedge (1 2 and 4 5 swapped); the legacy file too.
+  const Read mixed_back = read(__LINE__, temp_path("mixed.vtu"));
+  CHECK(mixed_back.mesh.cell_size == Mesh_file::mixed_cells && mixed_back.mesh.cells.size() == 4);
+  const std::string mixed_text = test::read_text(temp_path("mixed.vtu"));
+  const std::size_t appended = mixed_text.find("\n   _") + 5;
+  const auto int64s = [&](const char* name, std::size_t count) {
+    const std::size_t at = mixed_text.find(std::string("Name=\"") + name + "\"");
+    const std::size_t offset = std::stoul(mixed_text.substr(mixed_text.find("offset=\"", at) + 8));
+    std::vector<std::int64_t> values(count);
+    std::memcpy(values.data(), mixed_text.data() + appended + offset + 8, count * 8);
+    return values;
+  };
+  CHECK((int64s("connectivity", 23) == std::vector<std::int64_t>{0, 1, 2, 3, 4, 5, 6, 7, 4, 5, 6, 7, 8,
+                                                                  1, 2, 9, 5, 6, 10, 5, 10, 6, 11}));
+  CHECK((int64s("offsets", 4) == std::vector<std::int64_t>{8, 13, 19, 23}));
+  const std::size_t types_at = mixed_text.find("offset=\"", mixed_text.find("Name=\"types\"")) + 8;
+  CHECK(mixed_text.substr(appended + std::stoul(mixed_text.substr(types_at)) + 8, 4) == std::string("\x0c\x0e\x0d\x0a"));
+  try {
+    IO::write_VTK(temp_path("mixed.vtk"), mixed(), {{"quality", {1, 2, 3, 4}, false}});
+    const Read legacy = read(__LINE__, temp_path("mixed.vtk"));
+    CHECK(same_mesh(legacy.mesh, mixed()) && legacy.cells.size() == 1 && legacy.cells[0].values.size() == 4);
+    CHECK((legacy.mesh.cell_lines == std::vector<std::size_t>{19, 20, 21, 22}));
+  } catch(const std::exception& e) {
+    report_failure(__LINE__, e.what());
+  }
   // A mesh with no fixed list writes no `fixed`; a field `fixed` must agree with the list.
   CHECK(test::read_text(temp_path("quads.vtu")).find("\"fixed\"") == std::string::npos);
   CHECK(!read(__LINE__, temp_path("quads.vtu")).mesh.has_fixed);
@@ -398,7 +432,7 @@ void test_encodings()
 
 void test_meshio_files(const fs::path& folder)
 {
-  for(const char* name : {"tets", "triangles", "quads", "hex"}) {
+  for(const char* name : {"tets", "triangles", "quads", "hex", "mixed"}) {
     const Read base64 = read(__LINE__, (folder / (std::string(name) + "-base64.vtu")).string());
     const Read zlib = read(__LINE__, (folder / (std::string(name) + "-zlib.vtu")).string());
     const Read ascii = read(__LINE__, (folder / (std::string(name) + "-ascii.vtu")).string());
@@ -422,6 +456,14 @@ void test_meshio_files(const fs::path& folder)
   CHECK(read(__LINE__, (folder / "triangles-zlib.vtu").string()).mesh.map_dimension == 2);
   CHECK(read(__LINE__, (folder / "quads-zlib.vtu").string()).mesh.cell_size == 4);
   CHECK(read(__LINE__, (folder / "hex-zlib.vtu").string()).mesh.cell_size == 8);
+  // meshio's blocks of one type (a hexahedron, a pyramid, a wedge, a tetrahedron): mixed cells, the wedge
+  // (VTK's 1 2 9 5 6 10 in the file) in Mesh_file's order, each positively oriented; the fields per cell.
+  const Read m = read(__LINE__, (folder / "mixed-zlib.vtu").string());
+  CHECK(m.mesh.cell_size == Mesh_file::mixed_cells && (m.mesh.cell_sizes == std::vector<unsigned char>{8, 5, 6, 4}));
+  CHECK(m.mesh.cells == test::mixed_cell_mesh().cells && m.mesh.map_dimension == 3);
+  for(std::size_t c = 0; c < m.mesh.cells.size(); ++c)
+    CHECK_MESSAGE(test::corner_volume(m.mesh, c) > 0, "cell " + std::to_string(c));
+  CHECK(m.cells.size() == 1 && (m.cells[0].values == std::vector<double>{0.5, 1.5, 2.5, 3.5}));
   test::check_read_error<Read_error>(
     __FILE__, __LINE__, [](const std::string& path) { IO::read_VTU(path); }, (folder / "tets-lzma.vtu").string(), 2,
     "the compressor vtkLZMADataCompressor is not supported");
@@ -478,13 +520,31 @@ void test_binary_legacy()
   Legacy bad_index = legacy_tets();
   bad_index.bytes[cells_data + 4 * 9 + 3] = 9;   // the last index of cell 1
   CHECK_READ_ERROR("binary-bad-index.vtk", bad_index.bytes, 0,
-                   "at byte " + std::to_string(cells_data + 20) + ": cell 1: vertex index 9 is out of range [0, 4]");
+                   "at byte " + std::to_string(cells_data + 20)
+                     + ": cell 1: vertex index 9 is out of range [0, 4] (tetrahedron)");
   Legacy bad_size = legacy_tets();
-  bad_size.bytes[cells_data + 3] = 5;
+  bad_size.bytes[cells_data + 3] = 7;
   CHECK_READ_ERROR("binary-bad-size.vtk", bad_size.bytes, 0,
-                   "at byte " + std::to_string(cells_data) + ": cell 0 has 5 vertices");
-  const Legacy hexahedron = legacy_tets({10, 12});
-  CHECK_READ_ERROR("binary-mixed.vtk", hexahedron.bytes, 0, "mixed cell types: cell 1 is a hexahedron");
+                   "at byte " + std::to_string(cells_data) + ": cell 0 has 7 vertices");
+  // Binary wedges and pyramids: VTK's wedge order read into Mesh_file's, errors at the cell's offset.
+  Legacy solids;
+  solids.text("POINTS 6 float\n").values(std::vector<float>{0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 1, 0, 1});
+  solids.text("CELLS 2 13\n").values(std::vector<std::int32_t>{6, 0, 1, 2, 3, 4, 5, 5, 0, 1, 4, 3, 5});
+  solids.text("CELL_TYPES 2\n").values(std::vector<std::int32_t>{13, 14});
+  const Read wedge = read(__LINE__, test::write_text(temp_path("binary-wedge.vtk"), solids.bytes));
+  CHECK(wedge.mesh.cell_size == Mesh_file::mixed_cells && (wedge.mesh.cell_sizes == std::vector<unsigned char>{6, 5}));
+  CHECK(wedge.mesh.cells.size() == 2 && (wedge.mesh.cells[0] == std::array<std::size_t, 8>{0, 2, 1, 3, 5, 4, 0, 0})
+        && (wedge.mesh.cells[1] == std::array<std::size_t, 8>{0, 1, 4, 3, 5, 0, 0, 0}) && wedge.mesh.cell_lines.empty());
+  const std::size_t solids_data = solids.bytes.find("CELLS 2 13\n") + 11;
+  Legacy repeated = solids;
+  repeated.bytes[solids_data + 4 * 12 + 3] = 1;   // the apex of the pyramid, cell 1 at entry 7
+  CHECK_READ_ERROR("binary-pyramid.vtk", repeated.bytes, 0,
+                   "at byte " + std::to_string(solids_data + 4 * 7) + ": cell 1: vertex 1 is repeated (pyramid)");
+  const Legacy triangle = legacy_tets({10, 5});
+  CHECK_READ_ERROR("binary-mixed.vtk", triangle.bytes, 0,
+                   "mixed cell types: cell 1 is a triangle but cell 0 is a tetrahedron");
+  const Legacy hexahedron = legacy_tets({10, 12});   // (solid cells mix, but a hexahedron has 8 vertices)
+  CHECK_READ_ERROR("binary-hexahedron.vtk", hexahedron.bytes, 0, "cell 1 has type 12 (hexahedron) but 4 vertices");
   Legacy cut = legacy_tets();
   cut.bytes.resize(cut.bytes.size() - 5);
   CHECK_READ_ERROR("binary-cut-types.vtk", cut.bytes, 0, "truncated: the binary CELL_TYPES need 2 values");
@@ -536,13 +596,23 @@ void test_errors()
   CHECK_READ_ERROR("cell-type.vtu", head + ascii_piece(four_points, "0 1 2 3", "4", "11") + tail, 16,
                    "cell 0 has VTK type 11; only triangles (5), tetrahedra (10)");
   CHECK_READ_ERROR("index.vtu", head + ascii_piece(four_points, "0 1 2 3\n1 2 3 4", "4 8", "10 10", 4, 2) + tail,
-                   12, "cell 1: vertex index 4 is out of range [0, 3]");
+                   12, "cell 1: vertex index 4 is out of range [0, 3] (tetrahedron)");
   CHECK_READ_ERROR("repeated.vtu", head + ascii_piece(four_points, "0 1 2 2", "4", "10") + tail, 11,
-                   "cell 0: vertex 2 is repeated");
+                   "cell 0: vertex 2 is repeated (tetrahedron)");
   CHECK_READ_ERROR("negative.vtu", head + ascii_piece(four_points, "0 1 -2 3", "4", "10") + tail, 11,
                    "cell 0: vertex index -2 is negative");
   CHECK_READ_ERROR("mixed.vtu", head + ascii_piece(four_points, "0 1 2 3 0 1 2", "4 7", "10 5", 4, 2) + tail, 16,
                    "mixed cell types: cell 1 is a triangle but cell 0 is a tetrahedron");
+  const std::string six_points = "0 0 0 0 1 0 1 0 0 0 0 1 0 1 1 1 0 1";
+  const Read wedge = read(__LINE__, test::write_text(temp_path("wedge.vtu"),
+                                                     head + ascii_piece(six_points, "0 1 2\n3 4 5", "6", "13", 6) + tail));
+  CHECK(wedge.mesh.cell_size == Mesh_file::mixed_cells && (wedge.mesh.cell_sizes == std::vector<unsigned char>{6})
+        && (wedge.mesh.cells == std::vector<std::array<std::size_t, 8>>{{0, 2, 1, 3, 5, 4, 0, 0}})
+        && (wedge.mesh.cell_lines == std::vector<std::size_t>{11}));
+  CHECK_READ_ERROR("wedge-repeat.vtu", head + ascii_piece(six_points, "0 1 2 3 4 5\n0 1 2 3 0", "6 11", "13 14", 6, 2)
+                   + tail, 12, "cell 1: vertex 0 is repeated (pyramid)");
+  CHECK_READ_ERROR("pyramid-4.vtu", head + ascii_piece(four_points, "0 1 2 3", "4", "14") + tail, 16,
+                   "cell 0 has type 14 (pyramid) but 4 vertices");
   CHECK_READ_ERROR("type-size.vtu", head + ascii_piece(four_points, "0 1 2 3", "4", "5") + tail, 16,
                    "cell 0 has type 5 (triangle) but 4 vertices");
   CHECK_READ_ERROR("offsets.vtu", head + ascii_piece(four_points, "0 1 2 3", "4 4", "10 10", 4, 2) + tail, 13,

@@ -98,6 +98,7 @@ inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
   if(!same_bits(a.simplices, b.simplices)) mismatch("the simplices");
   if(a.cell_size != b.cell_size) mismatch("the cell size");
   if(!same_bits(a.cells, b.cells)) mismatch("the cells");
+  if(!same_bits(a.cell_sizes, b.cell_sizes)) mismatch("the cell sizes");
   if(a.rest_dimension != b.rest_dimension) mismatch("the rest dimension");
   if(!same_bits(a.rest, b.rest)) mismatch("the rest positions");
   if(a.map_dimension != b.map_dimension) mismatch("the map dimension");

@@ -23,9 +23,11 @@ namespace IO {
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a Gmsh `.msh` file, MSH 2.2 or 4.1, ASCII or binary (binary files
 /// with 8-byte `size_t`, either byte order), into `map`.  The mesh is made of
-/// the elements of the highest dimension: linear tetrahedra (type 4) into
-/// `simplices`, or hexahedra (type 5, whose node order is VTK's) into `cells`,
-/// else triangles (type 2) or quadrangles (type 3); points (type 15), lines
+/// the elements of the highest dimension: linear solid cells by the rule of
+/// Mesh_file (tetrahedra, type 4, alone into `simplices`, hexahedra, type 5,
+/// whose node order is VTK's, alone into `cells`, and any other mix of them,
+/// prisms, type 6, and pyramids, type 7, into mixed cells, in the order of
+/// the file), else triangles (type 2) or quadrangles (type 3); points (type 15), lines
 /// (type 1) and the boundary faces of a volume mesh are skipped.  Node tags
 /// may be sparse and in any order: the vertices are numbered as the nodes come
 /// in the file.  Sections other than `$MeshFormat`, `$PhysicalNames`,
@@ -37,10 +39,9 @@ namespace IO {
 /// in an ASCII file, the byte offset in a binary one.
 /// \throws Read_error if the file is missing or malformed, of another MSH
 /// version, if a node tag is repeated or an element refers to a node that
-/// `$Nodes` does not list, if an element is a prism, a pyramid or of higher
-/// order (the message names its tag and its type), or if both kinds of the
-/// dimension read are there (tetrahedra and hexahedra, or triangles and
-/// quadrangles: mixed cells).
+/// `$Nodes` does not list, if an element is of higher order or of another
+/// type (the message names its tag and its type), or if triangles and
+/// quadrangles make a mesh of no solid cell (mixed faces).
 inline Mesh_file read_GMSH(const std::string& path)
 {
   return internal::read_or_report_memory(path, [&] {
@@ -49,7 +50,7 @@ inline Mesh_file read_GMSH(const std::string& path)
     Mesh_file mesh;
     internal::select_GMSH_elements(stream, content, mesh);
     mesh.map = std::move(content.nodes);
-    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
+    mesh.map_dimension = internal::map_dimension_of(mesh);
     return mesh;
   });
 }
@@ -61,8 +62,9 @@ inline Mesh_file read_GMSH(const std::string& path)
 /// vertices (when `has_fixed`) are written as point elements (type 15) in a
 /// physical group named `fixed`, as read_GMSH() reads them.  A file read by
 /// read_GMSH() loses its lower-dimensional elements, its other physical
-/// groups and entities (all elements are written in one entity), its node and
-/// element tags (renumbered from 1) and any other section.
+/// groups and entities (all elements are written in one entity, in blocks of
+/// consecutive elements of one type, so that their order is kept), its node
+/// and element tags (renumbered from 1) and any other section.
 /// \throws Write_error if the mesh is inconsistent or the file cannot be written.
 inline void write_GMSH(const std::string& path, const Mesh_file& mesh)
 {

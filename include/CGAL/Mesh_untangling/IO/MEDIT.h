@@ -15,12 +15,14 @@ namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads an ASCII MEDIT `.mesh` file into `map`: its volume elements if it
-/// has any (Tetrahedra into `simplices`, or Hexahedra, in VTK's vertex order,
-/// into `cells`), else its face elements (Triangles, or Quadrilaterals into
-/// `cells`); other blocks (Edges, Corners, ...) are ignored.
-/// \throws Read_error if the file is missing or malformed, or if both kinds
-/// of the dimension read are there (Tetrahedra and Hexahedra, or Triangles
-/// and Quadrilaterals: mixed cells).
+/// has any, by the rule of Mesh_file (Tetrahedra alone into `simplices`,
+/// Hexahedra alone, in VTK's vertex order, into `cells`, and any other mix of
+/// Tetrahedra, Pyramids, Prisms and Hexahedra into mixed cells, the blocks
+/// in the order of the file), else its face elements (Triangles, or
+/// Quadrilaterals into `cells`); other blocks (Edges, Corners, ...) are ignored.
+/// \throws Read_error if the file is missing or malformed, if a volume block
+/// is in a file of Dimension 2, or if both Triangles and Quadrilaterals make
+/// a mesh of no volume element (mixed faces).
 inline Mesh_file read_MEDIT(const std::string& path)
 {
   return internal::read_or_report_memory(path, [&] {
@@ -29,14 +31,17 @@ inline Mesh_file read_MEDIT(const std::string& path)
     Mesh_file mesh;
     internal::select_MEDIT_simplices(file, content, mesh);
     mesh.map = std::move(content.vertices);
-    mesh.map_dimension = content.dimension == 2 ? 2 : internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
+    mesh.map_dimension = content.dimension == 2 ? 2 : internal::map_dimension_of(mesh);
     return mesh;
   });
 }
 
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the map (the rest if there is no map) and the simplices or cells as an ASCII
-/// MEDIT file, all references 0.
+/// MEDIT file, all references 0.  Cells of mixed kinds are written in one
+/// block per kind, Tetrahedra, Pyramids, Prisms, then Hexahedra: a mesh read
+/// from a file whose blocks come in that order reads back the same, any
+/// other order of cells comes back grouped by kind.
 /// \throws Write_error if the mesh is inconsistent or the file cannot be written.
 inline void write_MEDIT(const std::string& path, const Mesh_file& mesh)
 {

@@ -26,16 +26,34 @@ namespace IO {
 /// the list of texture coordinates (z = 0) and `simplex_corner_map[k][i]`
 /// the one of corner i of simplex k; `map` is then empty and `map_dimension` 0.
 ///
-/// A mesh holds simplices or cells (quadrilaterals, hexahedra), never both:
-/// readers reject a file that mixes them, naming its line.  Hexahedra are in
-/// VTK's vertex order (MEDIT's and Gmsh's are the same): 0 1 2 3 the bottom face, counter-
-/// clockwise seen from above, 4 5 6 7 the top face, vertex 4 above 0.
+/// A mesh holds simplices or cells, never both: readers reject a file that
+/// mixes triangles and quadrilaterals, naming its line.  The volume elements
+/// of a file are simplices when they are all tetrahedra, cells of
+/// `cell_size` 8 when they are all hexahedra, and otherwise (a pyramid or a
+/// prism, or tetrahedra with hexahedra) cells of mixed kinds
+/// (`cell_size == mixed_cells`, each cell's size in `cell_sizes`), where a
+/// tetrahedron is a cell of 4 vertices.  The vertex orders, each positive
+/// when its first face is seen counter-clockwise from the rest of the cell:
+/// - hexahedra, VTK's (MEDIT's and Gmsh's are the same): 0 1 2 3 the bottom
+///   face counter-clockwise seen from above, 4 5 6 7 the top face, 4 above 0;
+/// - prisms, Gmsh's and MEDIT's: 0 1 2 the bottom triangle counter-clockwise
+///   seen from above, 3 4 5 the top one, 3 above 0 (a VTK wedge lists its
+///   bottom clockwise: its readers and writers swap 1 2 and 4 5);
+/// - pyramids, VTK's, Gmsh's and MEDIT's: 0 1 2 3 the base counter-clockwise
+///   seen from the apex 4;
+/// - tetrahedra: 0 1 2 counter-clockwise seen from 3.
 struct Mesh_file
 {
+  /// `cell_size` of a mesh whose 3D cells are of several kinds (`cell_sizes`)
+  static constexpr int mixed_cells = -1;
+
   int simplex_size = 0;                               ///< 3 triangles, 4 tetrahedra, 0 no simplex
   std::vector<std::array<std::size_t, 4>> simplices;  ///< 0-based; 4th entry unused (0) for triangles
-  int cell_size = 0;                                  ///< 4 quadrilaterals, 8 hexahedra, 0 no cell
-  std::vector<std::array<std::size_t, 8>> cells;      ///< 0-based; entries past `cell_size` unused (0)
+  int cell_size = 0;                                  ///< 4 quadrilaterals, 8 hexahedra, `mixed_cells`, 0 no cell
+  std::vector<std::array<std::size_t, 8>> cells;      ///< 0-based; entries past the cell's size unused (0)
+  /// With `cell_size == mixed_cells`, the number of vertices of each cell:
+  /// 4 tetrahedron, 5 pyramid, 6 prism, 8 hexahedron.  Empty otherwise.
+  std::vector<unsigned char> cell_sizes;
   int rest_dimension = 0;                             ///< 0: no rest geometry in the file; else 2 or 3
   std::vector<std::array<double, 3>> rest;            ///< rest / parametric positions (z = 0 when 2D)
   int map_dimension = 0;                              ///< 0: no map in the file; else 2 or 3
@@ -66,6 +84,13 @@ struct Mesh_file
 
   /// whether the map is per corner (a seamless parameterization with seams)
   bool has_corner_map() const { return !simplex_corner_map.empty(); }
+
+  /// the number of vertices of cell `c`
+  std::size_t size_of_cell(std::size_t c) const
+  { return cell_size == mixed_cells ? std::size_t(cell_sizes[c]) : std::size_t(cell_size); }
+
+  /// whether the mesh is of 3D cells: hexahedra, or cells of mixed kinds
+  bool has_solid_cells() const { return cell_size == 8 || cell_size == mixed_cells; }
 
   /// the number of vertices: that of the rest or of the map, whichever has more
   std::size_t number_of_vertices() const { return (std::max)(rest.size(), map.size()); }

@@ -45,7 +45,7 @@ inline Mesh_file read_OBJ(const std::string& path, const OBJ_welding& welding = 
 /// were welded when read (`Mesh_file::has_welded_vertices()`) is written
 /// with the file's vertices: `v` = `file_vertices`, each face naming its
 /// corners' file vertices.
-/// \throws Write_error if the mesh has tetrahedra or hexahedra, a 3D map next to a rest,
+/// \throws Write_error if the mesh has solid cells (tetrahedra, hexahedra, mixed cells), a 3D map next to a rest,
 /// is inconsistent, or the file cannot be written.
 inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
 {

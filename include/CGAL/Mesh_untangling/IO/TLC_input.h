@@ -170,7 +170,7 @@ inline void write_TLC_input(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
   if(!mesh.cells.empty())
-    throw Write_error(path, "the .input format holds simplices only, not quadrilaterals or hexahedra");
+    throw Write_error(path, "the .input format holds simplices only, not quadrilaterals, hexahedra or other cells");
   if(mesh.rest_dimension == 0 || mesh.map_dimension == 0)
     throw Write_error(path, "the .input format needs both the rest and the map positions");
   internal::Atomic_output_file file(path);

@@ -15,10 +15,14 @@ namespace Mesh_untangling {
 namespace IO {
 
 /// \ingroup PkgMeshUntanglingIO
-/// Reads a legacy VTK unstructured grid, ASCII or binary, of triangles (type 5) or
-/// tetrahedra (type 10) into `simplices`, or of quadrilaterals (type 9) or
-/// hexahedra (type 12, VTK's vertex order) into `cells`, and the points into
-/// `map`; a file that mixes types is rejected, naming the line.  A point scalar named `fixed` (0 or 1 per
+/// Reads a legacy VTK unstructured grid, ASCII or binary, and the points into
+/// `map`: triangles (type 5) into `simplices` or quadrilaterals (type 9) into
+/// `cells`, or solid cells by the rule of Mesh_file: tetrahedra (type 10)
+/// into `simplices`, hexahedra (type 12, VTK's vertex order) into `cells`,
+/// and a mix of them, pyramids (type 14) and wedges (type 13, whose vertices
+/// a b c d e f become a c b d f e, Mesh_file's order of a prism) into mixed
+/// cells; a file that mixes face types, or faces and solid cells, is
+/// rejected, naming the line.  A point scalar named `fixed` (0 or 1 per
 /// point, as write_VTK() writes it) gives the fixed vertices (`has_fixed`
 /// and `fixed`); other point and cell data, field data and the array
 /// metadata that VTK 8 and later write are skipped, but for the scalars of
@@ -39,19 +43,19 @@ inline Mesh_file read_VTK(const std::string& path, VTK_fields* cell_fields = nul
     const bool binary = internal::read_VTK_header(file);
     Mesh_file mesh;
     internal::read_VTK_points(file, mesh, binary);
-    std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, mesh.map.size(), binary);
+    std::vector<internal::VTK_cell> cells = internal::read_VTK_cells(file, binary);
     internal::read_VTK_cell_types(file, cells, mesh, binary);
     if(cell_fields) cell_fields->clear();
     if(point_fields) point_fields->clear();
     internal::read_VTK_attributes(file, mesh, cell_fields, point_fields, binary);
-    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
+    mesh.map_dimension = internal::map_dimension_of(mesh);
     return mesh;
   });
 }
 
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the simplices or cells and the map (the rest if there is no map) as
-/// a legacy ASCII VTK unstructured grid, with optional scalar fields (one
+/// a legacy ASCII VTK unstructured grid (prisms as wedges, in VTK's order), with optional scalar fields (one
 /// value per simplex or cell, resp. per vertex; `int` or `double`), e.g. to inspect inverted
 /// elements in ParaView.  When the mesh has a list of fixed vertices
 /// (`has_fixed`), they are written first as the point scalar `fixed` (1 for
@@ -73,7 +77,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
     out << '\n';
   }
   internal::write_VTK_cells(out, mesh);
-  internal::write_VTK_fields(out, cell_fields, mesh.simplices.size() + mesh.cells.size(), "CELL_DATA");
+  internal::write_VTK_fields(out, cell_fields, internal::number_of_elements(mesh), "CELL_DATA");
   internal::write_VTK_fields(out, output.point_fields, points.size(), "POINT_DATA");
   file.commit();
 }

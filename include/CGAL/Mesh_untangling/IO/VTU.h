@@ -25,8 +25,11 @@ namespace IO {
 /// \ingroup PkgMeshUntanglingIO
 /// Reads an XML VTK unstructured grid (`.vtu`, as ParaView and meshio write
 /// it) of one Piece, as read_VTK() reads a legacy file: triangles (type 5)
-/// or tetrahedra (type 10) into `simplices`, quadrilaterals (type 9) or
-/// hexahedra (type 12) into `cells`, the points into `map`; the point array
+/// into `simplices`, quadrilaterals (type 9) into `cells`, or solid cells by
+/// the rule of Mesh_file (tetrahedra, type 10, into `simplices`, hexahedra,
+/// type 12, into `cells`, and a mix of them, pyramids, type 14, and wedges,
+/// type 13, whose vertices a b c d e f become a c b d f e, into mixed
+/// cells), the points into `map`; the point array
 /// `fixed` (0 or 1 per point) gives the fixed vertices, and `cell_fields` and
 /// `point_fields`, when given, receive the other arrays of one component
 /// (`integer` for the integer types).  The DataArrays may be ASCII, base64
@@ -54,14 +57,15 @@ inline Mesh_file read_VTU(const std::string& path, VTK_fields* cell_fields = nul
     if(point_fields) point_fields->clear();
     internal::read_VTU_data(in, doc.point_data, true, mesh.map.size(), mesh, point_fields);
     internal::read_VTU_data(in, doc.cell_data, false, doc.number_of_cells, mesh, cell_fields);
-    mesh.map_dimension = internal::dimension_of(mesh.map, mesh.cell_size == 8 ? 4 : mesh.simplex_size);
+    mesh.map_dimension = internal::map_dimension_of(mesh);
     return mesh;
   });
 }
 
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the simplices or cells and the map (the rest if there is no map) as
-/// a `.vtu` unstructured grid that read_VTU() reads back to the same bits:
+/// a `.vtu` unstructured grid (prisms as wedges, in VTK's order) that
+/// read_VTU() reads back to the same bits:
 /// raw appended data in the machine's byte order (declared), UInt64 headers,
 /// no compression; Float64 points, Int64 connectivity and offsets, UInt8
 /// types.  The fields and the point field `fixed` are written as write_VTK()

@@ -9,6 +9,7 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/internal/GMSH_stream.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
 #include <algorithm>
@@ -27,9 +28,9 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-// The elements a mesh can be made of; the others are read only to be skipped
-// (points, lines) or refused.
-enum GMSH_kind { GMSH_TRIANGLES, GMSH_QUADRANGLES, GMSH_TETRAHEDRA, GMSH_HEXAHEDRA, GMSH_LOWER_DIMENSION };
+// The elements a mesh can be made of (solid cells of any kind mix); the
+// others are read only to be skipped (points, lines) or refused.
+enum GMSH_kind { GMSH_TRIANGLES, GMSH_QUADRANGLES, GMSH_SOLIDS, GMSH_LOWER_DIMENSION };
 
 struct GMSH_type
 {
@@ -44,6 +45,7 @@ struct GMSH_type
 // them (Gmsh's reference manual, "Node ordering"; PETSc's Gmsh reader maps
 // them to the same corners), so hexahedra are read and written as they are.
 // test_gmsh checks it on hexahedra that Gmsh made: all positively oriented.
+// Its prism and pyramid are Mesh_file's too (the same manual's figures).
 inline GMSH_type GMSH_type_of(long long type)
 {
   switch(type) {
@@ -51,27 +53,20 @@ inline GMSH_type GMSH_type_of(long long type)
     case 1: return {2, 1, GMSH_LOWER_DIMENSION, "line"};
     case 2: return {3, 2, GMSH_TRIANGLES, "triangle"};
     case 3: return {4, 2, GMSH_QUADRANGLES, "quadrangle"};
-    case 4: return {4, 3, GMSH_TETRAHEDRA, "tetrahedron"};
-    case 5: return {8, 3, GMSH_HEXAHEDRA, "hexahedron"};
-    default: return {};
+    default: break;
   }
-}
-
-inline int GMSH_type_number(GMSH_kind kind)
-{
-  static const int numbers[] = {2, 3, 4, 5};
-  return numbers[kind];
+  const Solid_cell_kind* kind =
+    type < 0 || type > 255 ? nullptr : find_solid_cell_kind(&Solid_cell_kind::GMSH_type, static_cast<int>(type));
+  if(kind == nullptr)
+    return {};
+  return {kind->size, 3, GMSH_SOLIDS, kind->name};
 }
 
 // Why an element of `type` is refused (the types GMSH_type_of() does not know).
 inline std::string GMSH_refusal(long long type)
 {
-  const std::string only = " (only linear triangles, quadrangles, tetrahedra and hexahedra, "
+  const std::string only = " (only linear triangles, quadrangles, tetrahedra, pyramids, prisms and hexahedra, "
                            "and points and lines, which are skipped)";
-  if(type == 6)
-    return "is a prism (type 6): prisms are not supported yet" + only;
-  if(type == 7)
-    return "is a pyramid (type 7): pyramids are not supported yet" + only;
   static const char* const second_order[] = {
     "3-node second order line", "6-node second order triangle", "9-node second order quadrangle",
     "10-node second order tetrahedron", "27-node second order hexahedron", "18-node second order prism",
@@ -86,6 +81,7 @@ inline std::string GMSH_refusal(long long type)
 struct GMSH_elements
 {
   std::vector<std::array<std::size_t, 8>> ids;   // 0-based vertex ids
+  std::vector<unsigned char> sizes;              // nodes per element
   std::vector<std::size_t> lines;                // empty in a binary file
   std::size_t first_tag = 0;
   GMSH_place first_place;
@@ -101,7 +97,7 @@ struct GMSH_content
   bool has_nodes = false, has_elements = false;
   std::vector<std::array<double, 3>> nodes;
   std::unordered_map<std::size_t, std::size_t> node_ids;   // node tag -> 0-based id
-  std::array<GMSH_elements, 4> elements;             // by GMSH_kind
+  std::array<GMSH_elements, 3> elements;             // by GMSH_kind
   bool has_fixed_group = false;
   std::set<GMSH_key> fixed_groups;                   // the physical groups named "fixed"
   std::map<GMSH_key, std::vector<long long>> entity_groups;   // MSH 4.1: an entity's physical tags
@@ -299,7 +295,8 @@ void read_GMSH_element(GMSH_stream& stream, GMSH_content& content, const GMSH_ty
     tags[c] = read_tag([&] { return "node " + std::to_string(c + 1) + " of " + GMSH_element_name(tag); });
     const auto found = content.node_ids.find(tags[c]);
     if(found == content.node_ids.end())
-      stream.fail(stream.last_place(), GMSH_element_name(tag) + " refers to node " + std::to_string(tags[c])
+      stream.fail(stream.last_place(), GMSH_element_name(tag) + " (" + type.name + ") refers to node "
+                                           + std::to_string(tags[c])
                                            + ", which $Nodes does not list");
     ids[c] = found->second;
     for(int e = 0; e < c; ++e)
@@ -317,6 +314,7 @@ void read_GMSH_element(GMSH_stream& stream, GMSH_content& content, const GMSH_ty
     elements.first_place = at;
   }
   elements.ids.push_back(ids);
+  elements.sizes.push_back(static_cast<unsigned char>(type.nodes));
   if(!stream.binary())
     elements.lines.push_back(at.line);
 }
@@ -480,36 +478,37 @@ inline GMSH_content read_GMSH_content(GMSH_stream& stream)
   return content;
 }
 
-// The elements of the highest dimension are the mesh: tetrahedra or
-// hexahedra over triangles or quadrangles (a volume mesh lists its boundary
-// faces too).  Two kinds of that dimension are mixed cells: rejected.
+// The elements of the highest dimension are the mesh: solid cells, of any
+// kinds, stored by the rule of Mesh_file, over triangles or quadrangles (a
+// volume mesh lists its boundary faces too).  Faces of both kinds are mixed
+// cells: rejected.
 inline void select_GMSH_elements(const GMSH_stream& stream, GMSH_content& content, Mesh_file& mesh)
 {
-  const bool volume = !content.elements[GMSH_TETRAHEDRA].ids.empty() || !content.elements[GMSH_HEXAHEDRA].ids.empty();
-  const GMSH_kind simplex = volume ? GMSH_TETRAHEDRA : GMSH_TRIANGLES;
-  const GMSH_kind cell = volume ? GMSH_HEXAHEDRA : GMSH_QUADRANGLES;
-  GMSH_elements& simplices = content.elements[simplex];
-  GMSH_elements& cells = content.elements[cell];
-  if(!simplices.ids.empty() && !cells.ids.empty()) {
-    const bool cells_later = cells.first_place.offset > simplices.first_place.offset;
-    const GMSH_elements& later = cells_later ? cells : simplices;
-    const GMSH_elements& earlier = cells_later ? simplices : cells;
+  GMSH_elements& solids = content.elements[GMSH_SOLIDS];
+  GMSH_elements& triangles = content.elements[GMSH_TRIANGLES];
+  GMSH_elements& quadrangles = content.elements[GMSH_QUADRANGLES];
+  if(!solids.ids.empty()) {
+    for(std::size_t i = 0; i < solids.ids.size(); ++i)
+      add_solid_cell(mesh, solids.ids[i], solids.sizes[i], solids.lines.empty() ? 0 : solids.lines[i]);
+  } else if(!triangles.ids.empty() && !quadrangles.ids.empty()) {
+    const bool quadrangles_later = quadrangles.first_place.offset > triangles.first_place.offset;
+    const GMSH_elements& later = quadrangles_later ? quadrangles : triangles;
+    const GMSH_elements& earlier = quadrangles_later ? triangles : quadrangles;
     stream.fail(later.first_place, "mixed element types: " + GMSH_element_name(later.first_tag) + " is a "
-                                       + GMSH_type_of(GMSH_type_number(cells_later ? cell : simplex)).name + " but "
+                                       + (quadrangles_later ? "quadrangle" : "triangle") + " but "
                                        + GMSH_element_name(earlier.first_tag) + " is a "
-                                       + GMSH_type_of(GMSH_type_number(cells_later ? simplex : cell)).name
+                                       + (quadrangles_later ? "triangle" : "quadrangle")
                                        + "; a mesh holds one element type");
-  }
-  if(!cells.ids.empty()) {
-    mesh.cell_size = volume ? 8 : 4;
-    mesh.cells = std::move(cells.ids);
-    mesh.cell_lines = std::move(cells.lines);
-  } else if(!simplices.ids.empty()) {
-    mesh.simplex_size = volume ? 4 : 3;
-    mesh.simplices.reserve(simplices.ids.size());
-    for(const std::array<std::size_t, 8>& s : simplices.ids)
-      mesh.simplices.push_back({s[0], s[1], s[2], s[3]});
-    mesh.simplex_lines = std::move(simplices.lines);
+  } else if(!quadrangles.ids.empty()) {
+    mesh.cell_size = 4;
+    mesh.cells = std::move(quadrangles.ids);
+    mesh.cell_lines = std::move(quadrangles.lines);
+  } else if(!triangles.ids.empty()) {
+    mesh.simplex_size = 3;
+    mesh.simplices.reserve(triangles.ids.size());
+    for(const std::array<std::size_t, 8>& s : triangles.ids)
+      mesh.simplices.push_back({s[0], s[1], s[2], 0});
+    mesh.simplex_lines = std::move(triangles.lines);
   }
   mesh.has_fixed = content.has_fixed_group;
   std::sort(content.fixed.begin(), content.fixed.end());

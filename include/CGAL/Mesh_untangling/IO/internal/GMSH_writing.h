@@ -7,6 +7,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 
 #include <algorithm>
 #include <array>
@@ -23,18 +24,44 @@ namespace internal {
 struct GMSH_mesh_elements
 {
   int dimension;     // of the entity that holds the nodes and elements: 3 for volumes, else 2
-  int type;          // Gmsh's element type (2, 3, 4, 5); 0: no element
-  int size;          // nodes per element
   std::size_t count;
 };
 
 inline GMSH_mesh_elements GMSH_elements_of(const Mesh_file& mesh)
 {
-  if(!mesh.cells.empty())
-    return {mesh.cell_size == 8 ? 3 : 2, mesh.cell_size == 8 ? 5 : 3, mesh.cell_size, mesh.cells.size()};
-  if(!mesh.simplices.empty())
-    return {mesh.simplex_size == 4 ? 3 : 2, mesh.simplex_size == 4 ? 4 : 2, mesh.simplex_size, mesh.simplices.size()};
-  return {mesh.simplex_size == 4 || mesh.cell_size == 8 ? 3 : 2, 0, 0, 0};
+  return {mesh.simplex_size == 4 || mesh.has_solid_cells() ? 3 : 2, mesh.simplices.size() + mesh.cells.size()};
+}
+
+// Element i of a mesh (of simplices or of cells) as Gmsh lists it: its type
+// and its vertices, in Mesh_file's order, which is Gmsh's.
+struct GMSH_element_of_mesh
+{
+  int type;
+  int size;
+  std::array<std::size_t, 8> ids;
+};
+
+inline GMSH_element_of_mesh GMSH_element(const Mesh_file& mesh, std::size_t i)
+{
+  if(mesh.cells.empty()) {
+    const std::array<std::size_t, 4>& s = mesh.simplices[i];
+    return {mesh.simplex_size == 4 ? 4 : 2, mesh.simplex_size, {{s[0], s[1], s[2], s[3], 0, 0, 0, 0}}};
+  }
+  if(mesh.cell_size == 4)
+    return {3, 4, mesh.cells[i]};
+  const Solid_cell_kind& kind = *solid_cell_kind(static_cast<int>(mesh.size_of_cell(i)));
+  return {kind.GMSH_type, kind.size, mesh.cells[i]};
+}
+
+// Where the runs of elements of one type end (one past their last element):
+// each run is an element block, so that the order of the elements is kept.
+inline std::vector<std::size_t> GMSH_block_ends(const Mesh_file& mesh, std::size_t count)
+{
+  std::vector<std::size_t> ends;
+  for(std::size_t i = 1; i <= count; ++i)
+    if(i == count || GMSH_element(mesh, i).type != GMSH_element(mesh, i - 1).type)
+      ends.push_back(i);
+  return ends;
 }
 
 // One point entity per fixed vertex, in the physical group `fixed` (tag 1),
@@ -94,11 +121,13 @@ inline void write_GMSH_nodes(std::ostream& out, const GMSH_mesh_elements& elemen
   out << "$EndNodes\n";
 }
 
-// The mesh's elements, then one point element per fixed vertex.
+// The mesh's elements, a block per run of one type, then one point element
+// per fixed vertex.
 inline void write_GMSH_elements(std::ostream& out, const Mesh_file& mesh, const std::vector<std::size_t>& fixed,
                                 const GMSH_mesh_elements& elements)
 {
-  const std::size_t blocks = (elements.count != 0 ? 1 : 0) + fixed.size();
+  const std::vector<std::size_t> ends = GMSH_block_ends(mesh, elements.count);
+  const std::size_t blocks = ends.size() + fixed.size();
   const std::size_t count = elements.count + fixed.size();
   out << "$Elements\n";
   write_number(out, blocks);
@@ -108,22 +137,20 @@ inline void write_GMSH_elements(std::ostream& out, const Mesh_file& mesh, const 
   write_number(out, count);
   out << '\n';
   std::size_t tag = 0;
-  if(elements.count != 0) {
-    out << elements.dimension << " 1 " << elements.type << ' ';
-    write_number(out, elements.count);
+  for(std::size_t b = 0; b < ends.size(); ++b) {
+    const std::size_t begin = b == 0 ? 0 : ends[b - 1];
+    out << elements.dimension << " 1 " << GMSH_element(mesh, begin).type << ' ';
+    write_number(out, ends[b] - begin);
     out << '\n';
-    const auto write_element = [&](const auto& ids) {
+    for(std::size_t i = begin; i < ends[b]; ++i) {
+      const GMSH_element_of_mesh element = GMSH_element(mesh, i);
       write_number(out, ++tag);
-      for(int c = 0; c < elements.size; ++c) {
+      for(int c = 0; c < element.size; ++c) {
         out << ' ';
-        write_number(out, ids[c] + 1);
+        write_number(out, element.ids[c] + 1);
       }
       out << '\n';
-    };
-    if(!mesh.cells.empty())
-      std::for_each(mesh.cells.begin(), mesh.cells.end(), write_element);
-    else
-      std::for_each(mesh.simplices.begin(), mesh.simplices.end(), write_element);
+    }
   }
   for(std::size_t i = 0; i < fixed.size(); ++i) {
     out << "0 ";

@@ -14,8 +14,10 @@
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_parsing.h>
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -42,9 +44,8 @@ struct MEDIT_content
   std::size_t vertices_line = 0;                // 0: no Vertices block
   std::vector<std::array<double, 3>> vertices;
   MEDIT_elements triangles;
-  MEDIT_elements tetrahedra;
   MEDIT_elements quadrilaterals;
-  MEDIT_elements hexahedra;
+  std::array<MEDIT_elements, 4> solids;         // Tetrahedra, Pyramids, Prisms, Hexahedra: as solid_cell_kinds()
 };
 
 // A word where a number should be means the block has fewer entries than
@@ -130,10 +131,8 @@ inline void read_MEDIT_vertices(Text_file& file, const Token& keyword, MEDIT_con
   }
 }
 
-// `k` vertices per element: 3 triangles, 4 tetrahedra (or quadrilaterals,
-// `cell`), 8 hexahedra.
-inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, MEDIT_elements& block,
-                                bool cell = false)
+// `k` vertices per element, each a `name` (in messages).
+inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, const char* name, MEDIT_elements& block)
 {
   if(block.header_line != 0)
     file.fail(keyword.line, "second " + std::string(keyword.text) + " block (the first is at line "
@@ -143,7 +142,7 @@ inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, ME
   block.ids.reserve(file.sane_capacity(count));
   block.lines.reserve(file.sane_capacity(count));
   for(std::size_t i = 0; i < count; ++i) {
-    const auto what = [&] { return std::string(cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1); };
+    const auto what = [&] { return std::string(name) + " " + std::to_string(i + 1); };
     std::array<std::size_t, 8> ids = {0, 0, 0, 0, 0, 0, 0, 0};
     std::size_t line = 0, first_line = 0;
     for(int c = 0; c < k; ++c) {
@@ -181,17 +180,6 @@ inline std::size_t MEDIT_ignored_width(std::string_view keyword, int dimension)
   return 0;
 }
 
-// Cells that are not simplices: their entry width.
-inline std::size_t MEDIT_other_cell_width(std::string_view keyword)
-{
-  struct Entry { const char* keyword; std::size_t width; };
-  const Entry table[] = {{"Prisms", 7}, {"Pyramids", 6}};
-  for(const Entry& e : table)
-    if(same_keyword(keyword, e.keyword))
-      return e.width;
-  return 0;
-}
-
 inline void read_MEDIT_header_value(Text_file& file, const Token& keyword, MEDIT_content& content)
 {
   Token value;
@@ -217,25 +205,20 @@ inline void read_MEDIT_block(Text_file& file, const Token& keyword, MEDIT_conten
   if(same_keyword(keyword.text, "Vertices"))
     return read_MEDIT_vertices(file, keyword, content);
   if(same_keyword(keyword.text, "Triangles"))
-    return read_MEDIT_elements(file, keyword, 3, content.triangles);
-  if(same_keyword(keyword.text, "Tetrahedra") || same_keyword(keyword.text, "Hexahedra")) {
+    return read_MEDIT_elements(file, keyword, 3, simplex_name(3), content.triangles);
+  if(same_keyword(keyword.text, "Quadrilaterals"))
+    return read_MEDIT_elements(file, keyword, 4, cell_name(4), content.quadrilaterals);
+  for(std::size_t k = 0; k < content.solids.size(); ++k) {
+    const Solid_cell_kind& kind = solid_cell_kinds()[k];
+    if(!same_keyword(keyword.text, kind.MEDIT_section))
+      continue;
     if(content.dimension == 2)
       file.fail(keyword.line, std::string(keyword.text) + " in a mesh of Dimension 2");
-    if(same_keyword(keyword.text, "Hexahedra"))
-      return read_MEDIT_elements(file, keyword, 8, content.hexahedra, true);
-    return read_MEDIT_elements(file, keyword, 4, content.tetrahedra);
+    return read_MEDIT_elements(file, keyword, kind.size, kind.name, content.solids[k]);
   }
-  if(same_keyword(keyword.text, "Quadrilaterals"))
-    return read_MEDIT_elements(file, keyword, 4, content.quadrilaterals, true);
   if(std::size_t width = MEDIT_ignored_width(keyword.text, content.dimension)) {
     skip_MEDIT_block(file, keyword, width);
     return;
-  }
-  if(std::size_t width = MEDIT_other_cell_width(keyword.text)) {
-    if(skip_MEDIT_block(file, keyword, width) == 0)
-      return;
-    file.fail(keyword.line, std::string(keyword.text) + " are not supported (only triangles, quadrilaterals, "
-                                                        "tetrahedra and hexahedra)");
   }
   file.fail(keyword.line, "unsupported MEDIT keyword " + quote_token(keyword.text));
 }
@@ -260,37 +243,60 @@ inline MEDIT_content read_MEDIT_content(Text_file& file)
   return content;
 }
 
-// Tetrahedra win: the Triangles of a tet mesh are only its boundary.
-// The elements of the highest dimension are the mesh: tetrahedra or
-// hexahedra over triangles or quadrilaterals (a volume mesh lists its
-// boundary faces too).  Two kinds of that dimension are mixed cells: rejected.
+// Solid cells win: the Triangles or Quadrilaterals of a volume mesh are only
+// its boundary.  The solid cells, of any kinds, are stored by the rule of
+// Mesh_file, their blocks concatenated in the order of the file; faces of two
+// kinds are mixed cells: rejected.
+inline bool select_MEDIT_solids(const Text_file& file, const MEDIT_content& content, Mesh_file& mesh)
+{
+  std::vector<std::size_t> blocks;   // of solid_cell_kinds(), in the order of the file
+  for(std::size_t k = 0; k < content.solids.size(); ++k)
+    if(!content.solids[k].ids.empty())
+      blocks.push_back(k);
+  if(blocks.empty())
+    return false;
+  std::sort(blocks.begin(), blocks.end(), [&](std::size_t a, std::size_t b) {
+    return content.solids[a].header_line < content.solids[b].header_line;
+  });
+  for(std::size_t k : blocks) {
+    const Solid_cell_kind& kind = solid_cell_kinds()[k];
+    const MEDIT_elements& block = content.solids[k];
+    for(std::size_t i = 0; i < block.ids.size(); ++i) {
+      const std::string defect = simplex_defect(block.ids[i], kind.size, content.vertices.size(), 1);
+      if(!defect.empty())
+        file.fail(block.lines[i], std::string(kind.name) + " " + std::to_string(i + 1) + ": " + defect);
+      add_solid_cell(mesh, to_zero_based(block.ids[i], kind.size, 1), kind.size, block.lines[i]);
+    }
+  }
+  return true;
+}
+
 inline void select_MEDIT_simplices(const Text_file& file, const MEDIT_content& content, Mesh_file& mesh)
 {
-  struct Kind { const MEDIT_elements* block; const char* name; int size; bool cell; };
-  const bool volume = !content.tetrahedra.ids.empty() || !content.hexahedra.ids.empty();
-  const Kind kinds[2] = {
-    volume ? Kind{&content.tetrahedra, "Tetrahedra", 4, false} : Kind{&content.triangles, "Triangles", 3, false},
-    volume ? Kind{&content.hexahedra, "Hexahedra", 8, true} : Kind{&content.quadrilaterals, "Quadrilaterals", 4, true}};
-  if(!kinds[0].block->ids.empty() && !kinds[1].block->ids.empty())
-    file.fail(kinds[1].block->header_line, std::string("mixed cell kinds: ") + kinds[1].name + " and " + kinds[0].name
-                                               + " (line " + std::to_string(kinds[0].block->header_line)
-                                               + "); only one element type is supported");
-  const Kind& kind = kinds[1].block->ids.empty() ? kinds[0] : kinds[1];
-  const MEDIT_elements& block = *kind.block;
-  const int k = block.ids.empty() && !kind.cell ? 0 : kind.size;
-  (kind.cell ? mesh.cell_size : mesh.simplex_size) = k;
+  if(select_MEDIT_solids(file, content, mesh))
+    return;
+  const MEDIT_elements& triangles = content.triangles;
+  const MEDIT_elements& quadrilaterals = content.quadrilaterals;
+  if(!triangles.ids.empty() && !quadrilaterals.ids.empty())
+    file.fail(quadrilaterals.header_line, "mixed cell kinds: Quadrilaterals and Triangles (line "
+                                              + std::to_string(triangles.header_line)
+                                              + "); only one element type is supported");
+  const bool cell = !quadrilaterals.ids.empty();
+  const MEDIT_elements& block = cell ? quadrilaterals : triangles;
+  const int k = cell ? 4 : block.ids.empty() ? 0 : 3;
+  (cell ? mesh.cell_size : mesh.simplex_size) = k;
   for(std::size_t i = 0; i < block.ids.size(); ++i) {
     std::string defect = simplex_defect(block.ids[i], k, content.vertices.size(), 1);
     if(!defect.empty())
-      file.fail(block.lines[i], std::string(kind.cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1)
+      file.fail(block.lines[i], std::string(cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1)
                                     + ": " + defect);
     const std::array<std::size_t, 8> ids = to_zero_based(block.ids[i], k, 1);
-    if(kind.cell)
+    if(cell)
       mesh.cells.push_back(ids);
     else
       mesh.simplices.push_back({ids[0], ids[1], ids[2], ids[3]});
   }
-  (kind.cell ? mesh.cell_lines : mesh.simplex_lines) = block.lines;
+  (cell ? mesh.cell_lines : mesh.simplex_lines) = block.lines;
 }
 
 inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points)
@@ -301,28 +307,38 @@ inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points
   return false;
 }
 
-inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
+// One block of the elements of `mesh` that `keep` keeps, each `size` vertices.
+template <class Keep, class Elements>
+void write_MEDIT_block(std::ostream& out, const char* keyword, const Elements& elements, int size, const Keep& keep)
 {
-  if(!mesh.cells.empty()) {
-    const int k = mesh.cell_size;
-    out << (k == 8 ? "Hexahedra\n" : "Quadrilaterals\n") << mesh.cells.size() << '\n';
-    for(const std::array<std::size_t, 8>& s : mesh.cells) {
-      for(int c = 0; c < k; ++c)
-        out << s[c] + 1 << ' ';
-      out << "0\n";
-    }
-    out << '\n';
-  }
-  if(mesh.simplices.empty())
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < elements.size(); ++i)
+    count += keep(i) ? 1 : 0;
+  if(count == 0)
     return;
-  const int k = mesh.simplex_size;
-  out << (k == 4 ? "Tetrahedra\n" : "Triangles\n") << mesh.simplices.size() << '\n';
-  for(const std::array<std::size_t, 4>& s : mesh.simplices) {
-    for(int c = 0; c < k; ++c)
-      out << s[c] + 1 << ' ';
+  out << keyword << '\n' << count << '\n';
+  for(std::size_t i = 0; i < elements.size(); ++i) {
+    if(!keep(i))
+      continue;
+    for(int c = 0; c < size; ++c)
+      out << elements[i][c] + 1 << ' ';
     out << "0\n";
   }
   out << '\n';
+}
+
+// Solid cells in one block per kind, in the order of solid_cell_kinds().
+inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
+{
+  const auto all = [](std::size_t) { return true; };
+  if(mesh.has_solid_cells()) {
+    for(const Solid_cell_kind& kind : solid_cell_kinds())
+      write_MEDIT_block(out, kind.MEDIT_section, mesh.cells, kind.size,
+                        [&](std::size_t i) { return mesh.size_of_cell(i) == static_cast<std::size_t>(kind.size); });
+  } else if(mesh.cell_size == 4) {
+    write_MEDIT_block(out, "Quadrilaterals", mesh.cells, 4, all);
+  }
+  write_MEDIT_block(out, mesh.simplex_size == 4 ? "Tetrahedra" : "Triangles", mesh.simplices, mesh.simplex_size, all);
 }
 
 } // namespace internal

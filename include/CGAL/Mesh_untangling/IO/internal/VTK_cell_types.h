@@ -2,12 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // VTK's cell types and how a cell of the file becomes an element of the
-// Mesh_file: one rule for the legacy reader (ASCII and binary) and the XML one.
+// Mesh_file, and back: one rule for the legacy reader (ASCII and binary) and
+// the XML one, and for their writers.  Faces (triangles, quadrilaterals) are
+// of one type; solid cells may mix, as Mesh_file's rule stores them.
 #ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_VTK_CELL_TYPES_H
 #define CGAL_MESH_UNTANGLING_IO_INTERNAL_VTK_CELL_TYPES_H
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 
 #include <array>
 #include <cstddef>
@@ -20,24 +23,34 @@ namespace internal {
 
 struct VTK_cell
 {
-  std::array<std::size_t, 8> ids;
+  std::array<std::size_t, 8> ids;   // in VTK's order
   std::size_t size;
-  std::size_t line;   // 0 in binary data, which has no lines
+  std::size_t line;     // 0 in binary data, which has no lines
+  std::size_t offset;   // of its vertex count in binary data, else 0
 };
 
-inline int VTK_simplex_size(std::size_t type)
+// The face elements; the solid cells are in solid_cell_kinds().
+inline int VTK_face_size(std::size_t type)
 {
-  return type == 10 ? 4 : type == 5 ? 3 : 0;
+  return type == 5 ? 3 : type == 9 ? 4 : 0;
 }
 
-inline int VTK_cell_size(std::size_t type)
+inline const Solid_cell_kind* VTK_solid_kind(std::size_t type)
 {
-  return type == 12 ? 8 : type == 9 ? 4 : 0;
+  return type > 255 ? nullptr : find_solid_cell_kind(&Solid_cell_kind::VTK_type, static_cast<int>(type));
+}
+
+// The number of vertices of an element of VTK type `type`; 0 for a type not read.
+inline std::size_t VTK_type_size(std::size_t type)
+{
+  const Solid_cell_kind* kind = VTK_solid_kind(type);
+  return static_cast<std::size_t>(kind != nullptr ? kind->size : VTK_face_size(type));
 }
 
 inline std::string VTK_type_name(std::size_t type)
 {
-  return VTK_simplex_size(type) != 0 ? simplex_name(VTK_simplex_size(type)) : cell_name(VTK_cell_size(type));
+  const Solid_cell_kind* kind = VTK_solid_kind(type);
+  return kind != nullptr ? kind->name : type == 5 ? "triangle" : "quadrilateral";
 }
 
 inline std::string VTK_cell_what(std::size_t i) { return "cell " + std::to_string(i); }
@@ -46,57 +59,85 @@ inline std::string VTK_cell_what(std::size_t i) { return "cell " + std::to_strin
 // else why not.
 inline std::string VTK_vertex_count_defect(std::size_t i, std::size_t size)
 {
-  if(size == 3 || size == 4 || size == 8)
+  if(size >= 3 && size <= 8 && size != 7)
     return "";
   return VTK_cell_what(i) + " has " + std::to_string(size)
-         + " vertices; only triangles (3), tetrahedra and quadrilaterals (4) and hexahedra (8) are supported";
+         + " vertices; only triangles (3), tetrahedra and quadrilaterals (4), pyramids (5), wedges (6) and "
+           "hexahedra (8) are supported";
 }
 
-// Vertex ids in range and distinct: "" or why not.
-inline std::string VTK_vertex_defect(std::size_t i, const VTK_cell& cell, std::size_t number_of_points)
+// The elements of a file as they are read into its mesh.
+struct VTK_elements
 {
-  const std::string defect = simplex_defect(cell.ids, static_cast<int>(cell.size), number_of_points, 0);
-  return defect.empty() ? defect : VTK_cell_what(i) + ": " + defect;
-}
+  Mesh_file& mesh;
+  std::size_t first_type = 0;   // of cell 0: a face type every other cell must share, or a solid one
+};
 
-// Appends cell i of VTK type `type` to the simplices or the cells of `mesh`;
-// `first_type` is the type of cell 0, which every other cell must share.
-// "" or why the cell is refused.
-inline std::string add_VTK_element(Mesh_file& mesh, std::size_t i, std::size_t type, const VTK_cell& cell,
-                                   std::size_t& first_type)
+// Appends cell i of VTK type `type` (its vertex ids checked against
+// `number_of_points`) to `elements`: "" or why the cell is refused, in its
+// vertices (`in_vertices`: the error is where the cell is) or its type.
+inline std::string add_VTK_element(VTK_elements& elements, std::size_t i, std::size_t type, const VTK_cell& cell,
+                                   std::size_t number_of_points, bool& in_vertices)
 {
+  in_vertices = false;
   const std::string what = VTK_cell_what(i);
-  const int k = VTK_simplex_size(type), c = VTK_cell_size(type);
-  if(k == 0 && c == 0)
-    return what + " has VTK type " + std::to_string(type)
-           + "; only triangles (5), tetrahedra (10), quadrilaterals (9) and hexahedra (12) are supported";
+  const std::size_t size = VTK_type_size(type);
+  if(size == 0)
+    return what + " has VTK type " + std::to_string(type) + "; only triangles (5), tetrahedra (10), "
+                  "quadrilaterals (9), hexahedra (12), wedges (13) and pyramids (14) are supported";
+  const Solid_cell_kind* kind = VTK_solid_kind(type);
   if(i == 0)
-    first_type = type;
-  else if(type != first_type)
+    elements.first_type = type;
+  else if(kind == nullptr ? type != elements.first_type : VTK_solid_kind(elements.first_type) == nullptr)
     return "mixed cell types: " + what + " is a " + VTK_type_name(type) + " but cell 0 is a "
-           + VTK_type_name(first_type) + "; only one element type is supported";
-  if(static_cast<std::size_t>(k + c) != cell.size)
+           + VTK_type_name(elements.first_type) + "; only one face type, or solid cells (tetrahedra, pyramids, "
+           "wedges, hexahedra) together, are supported";
+  if(size != cell.size)
     return what + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
            + std::to_string(cell.size) + " vertices";
-  if(k != 0) {
-    mesh.simplex_size = k;
-    mesh.simplices.push_back({cell.ids[0], cell.ids[1], cell.ids[2], cell.ids[3]});
+  const std::string defect = simplex_defect(cell.ids, static_cast<int>(size), number_of_points, 0);
+  if(!defect.empty()) {
+    in_vertices = true;
+    // (the kind last: the message keeps the form "cell i: ..." that scripts match)
+    return what + ": " + defect + " (" + VTK_type_name(type) + ")";
+  }
+  Mesh_file& mesh = elements.mesh;
+  if(kind != nullptr) {
+    add_solid_cell(mesh, in_VTK_order(*kind, cell.ids), kind->size, cell.line);
+  } else if(size == 3) {
+    mesh.simplex_size = 3;
+    mesh.simplices.push_back({cell.ids[0], cell.ids[1], cell.ids[2], 0});
     if(cell.line != 0) mesh.simplex_lines.push_back(cell.line);
   } else {
-    mesh.cell_size = c;
+    mesh.cell_size = 4;
     mesh.cells.push_back(cell.ids);
     if(cell.line != 0) mesh.cell_lines.push_back(cell.line);
   }
   return "";
 }
 
-// The VTK type of the elements of `mesh`, as the writers write them.
-inline int VTK_type_of(const Mesh_file& mesh)
+// Element i of a mesh (of simplices or of cells) as VTK lists it.
+struct VTK_element_of_mesh
 {
-  if(!mesh.cells.empty())
-    return mesh.cell_size == 8 ? 12 : 9;
-  return mesh.simplex_size == 4 ? 10 : 5;
+  int type;
+  std::size_t size;
+  std::array<std::size_t, 8> ids;   // in VTK's order
+};
+
+inline VTK_element_of_mesh VTK_element(const Mesh_file& mesh, std::size_t i)
+{
+  if(mesh.cells.empty()) {
+    const std::array<std::size_t, 4>& s = mesh.simplices[i];
+    return {mesh.simplex_size == 4 ? 10 : 5, static_cast<std::size_t>(mesh.simplex_size),
+            {{s[0], s[1], s[2], s[3], 0, 0, 0, 0}}};
+  }
+  if(mesh.cell_size == 4)
+    return {9, 4, mesh.cells[i]};
+  const Solid_cell_kind& kind = *solid_cell_kind(static_cast<int>(mesh.size_of_cell(i)));
+  return {kind.VTK_type, static_cast<std::size_t>(kind.size), in_VTK_order(kind, mesh.cells[i])};
 }
+
+inline std::size_t number_of_elements(const Mesh_file& mesh) { return mesh.simplices.size() + mesh.cells.size(); }
 
 } // namespace internal
 } // namespace IO

@@ -255,27 +255,25 @@ inline void read_VTK_points(Text_file& file, Mesh_file& mesh, bool binary = fals
   }
 }
 
-inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count, std::size_t n)
+// (its vertex ids are checked with its type: add_VTK_element())
+inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
 {
   Token size_token = next_VTK_value(file, "CELLS", i, count, "cells");
   if(same_keyword(size_token.text, "OFFSETS"))
     file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
   const std::string what = VTK_cell_what(i);
-  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line};
-  std::string defect = VTK_vertex_count_defect(i, cell.size);
+  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line, 0};
+  const std::string defect = VTK_vertex_count_defect(i, cell.size);
   if(!defect.empty())
     file.fail(cell.line, defect);
   for(std::size_t c = 0; c < cell.size; ++c)
     cell.ids[c] = to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what);
-  defect = VTK_vertex_defect(i, cell, n);
-  if(!defect.empty())
-    file.fail(cell.line, defect);
   return cell;
 }
 
 // Binary cells: `size` ints, each cell its vertex count and then its vertices.
 inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token& size_token, std::size_t count,
-                                                   std::size_t size, std::size_t number_of_vertices)
+                                                   std::size_t size)
 {
   const VTK_binary_block block = read_VTK_binary_values(file, Token{"int", size_token.line}, size, "CELLS");
   const std::vector<double>& v = block.values;
@@ -286,7 +284,7 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
     if(at == size)
       fail_at_byte(file, block.offset_of(at), "truncated: the CELLS block ends after " + std::to_string(i) + " of "
                                                   + std::to_string(count) + " cells");
-    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0};
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0, block.offset_of(at)};
     std::string defect = VTK_vertex_count_defect(i, cell.size);
     if(defect.empty() && cell.size > size - at - 1)
       defect = "truncated: the CELLS block ends inside " + VTK_cell_what(i);
@@ -294,8 +292,6 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
       const double id = v[at + 1 + c];
       cell.ids[c] = id < 0 ? std::size_t(-1) : saturated_size(id);
     }
-    if(defect.empty())
-      defect = VTK_vertex_defect(i, cell, number_of_vertices);
     if(!defect.empty())
       fail_at_byte(file, block.offset_of(at), defect);
     at += 1 + cell.size;
@@ -307,7 +303,7 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
   return cells;
 }
 
-inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_of_vertices, bool binary = false)
+inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, bool binary = false)
 {
   Token keyword = expect_VTK_section(file, "CELLS", binary);
   Token count_token, size_token;
@@ -316,12 +312,12 @@ inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, std::size_t number_
   const std::size_t count = to_size(file, count_token, "CELLS count");
   const std::size_t size = to_size(file, size_token, "CELLS size");
   if(binary)
-    return read_VTK_binary_cells(file, size_token, count, size, number_of_vertices);
+    return read_VTK_binary_cells(file, size_token, count, size);
   std::vector<VTK_cell> cells;
   cells.reserve(file.sane_capacity(count));
   std::size_t used = 0;
   for(std::size_t i = 0; i < count; ++i) {
-    cells.push_back(read_VTK_cell(file, i, count, number_of_vertices));
+    cells.push_back(read_VTK_cell(file, i, count));
     used += 1 + cells.back().size;
   }
   if(used != size)
@@ -341,23 +337,24 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
   if(count != cells.size())
     file.fail(count_token.line, "CELL_TYPES has " + std::to_string(count) + " entries but CELLS has "
                                     + std::to_string(cells.size()));
-  std::size_t first_type = 0;
+  VTK_elements elements{mesh, 0};
+  bool in_vertices = false;
   if(binary) {
     const VTK_binary_block types = read_VTK_binary_values(file, Token{"int", count_token.line}, count, "CELL_TYPES");
     for(std::size_t i = 0; i < count; ++i) {
-      const std::string defect = add_VTK_element(mesh, i, types.values[i] < 0 ? 0 : saturated_size(types.values[i]),
-                                                 cells[i], first_type);
+      const std::string defect = add_VTK_element(elements, i, types.values[i] < 0 ? 0 : saturated_size(types.values[i]),
+                                                 cells[i], mesh.map.size(), in_vertices);
       if(!defect.empty())
-        fail_at_byte(file, types.offset_of(i), defect);
+        fail_at_byte(file, in_vertices ? cells[i].offset : types.offset_of(i), defect);
     }
-    return;
-  }
-  for(std::size_t i = 0; i < count; ++i) {
-    Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
-    const std::size_t type = to_size(file, t, "type of " + VTK_cell_what(i));
-    const std::string defect = add_VTK_element(mesh, i, type, cells[i], first_type);
-    if(!defect.empty())
-      file.fail(t.line, defect);
+  } else {
+    for(std::size_t i = 0; i < count; ++i) {
+      Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
+      const std::size_t type = to_size(file, t, "type of " + VTK_cell_what(i));
+      const std::string defect = add_VTK_element(elements, i, type, cells[i], mesh.map.size(), in_vertices);
+      if(!defect.empty())
+        file.fail(in_vertices ? cells[i].line : t.line, defect);
+    }
   }
 }
 
@@ -541,31 +538,21 @@ inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::s
 
 inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 {
-  if(!mesh.cells.empty()) {
-    const std::size_t c = static_cast<std::size_t>(mesh.cell_size);
-    out << "CELLS " << mesh.cells.size() << ' ' << mesh.cells.size() * (c + 1) << '\n';
-    for(const std::array<std::size_t, 8>& s : mesh.cells) {
-      out << c;
-      for(std::size_t i = 0; i < c; ++i)
-        out << ' ' << s[i];
-      out << '\n';
-    }
-    out << "CELL_TYPES " << mesh.cells.size() << '\n';
-    for(std::size_t i = 0; i < mesh.cells.size(); ++i)
-      out << VTK_type_of(mesh) << '\n';
-    return;
-  }
-  const std::size_t k = static_cast<std::size_t>(mesh.simplex_size);
-  out << "CELLS " << mesh.simplices.size() << ' ' << mesh.simplices.size() * (k + 1) << '\n';
-  for(const std::array<std::size_t, 4>& s : mesh.simplices) {
-    out << k;
-    for(std::size_t c = 0; c < k; ++c)
-      out << ' ' << s[c];
+  const std::size_t count = number_of_elements(mesh);
+  std::size_t size = 0;
+  for(std::size_t i = 0; i < count; ++i)
+    size += 1 + VTK_element(mesh, i).size;
+  out << "CELLS " << count << ' ' << size << '\n';
+  for(std::size_t i = 0; i < count; ++i) {
+    const VTK_element_of_mesh element = VTK_element(mesh, i);
+    out << element.size;
+    for(std::size_t c = 0; c < element.size; ++c)
+      out << ' ' << element.ids[c];
     out << '\n';
   }
-  out << "CELL_TYPES " << mesh.simplices.size() << '\n';
-  for(std::size_t i = 0; i < mesh.simplices.size(); ++i)
-    out << VTK_type_of(mesh) << '\n';
+  out << "CELL_TYPES " << count << '\n';
+  for(std::size_t i = 0; i < count; ++i)
+    out << VTK_element(mesh, i).type << '\n';
 }
 
 } // namespace internal

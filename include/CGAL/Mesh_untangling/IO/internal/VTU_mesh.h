@@ -101,10 +101,11 @@ inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
   const std::vector<double> ids = in.values(connectivity_array, saturated_size(start), &lines);
   const std::vector<double> types = in.values(types_array, m);
   const std::size_t n = mesh.map.size();
-  std::size_t first_type = 0, begin = 0;
+  VTK_elements elements{mesh, 0};
+  std::size_t begin = 0;
   for(std::size_t i = 0; i < m; ++i) {
     const std::size_t end = saturated_size(offsets[i]);
-    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - begin, lines.empty() ? 0 : lines[begin]};
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - begin, lines.empty() ? 0 : lines[begin], 0};
     const std::size_t line = lines.empty() ? connectivity_array.line : cell.line;
     for(std::size_t c = 0; c < cell.size; ++c) {
       if(ids[begin + c] < 0)
@@ -112,15 +113,13 @@ inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
                           + " is negative");
       cell.ids[c] = saturated_size(ids[begin + c]);
     }
-    std::string defect = VTK_vertex_defect(i, cell, n);
-    if(!defect.empty())
-      in.fail(line, defect);
     if(types[i] < 0)
       in.fail(types_array.line, VTK_cell_what(i) + " has the negative type "
                                     + std::to_string(static_cast<long long>(types[i])));
-    defect = add_VTK_element(mesh, i, saturated_size(types[i]), cell, first_type);
+    bool in_vertices = false;
+    const std::string defect = add_VTK_element(elements, i, saturated_size(types[i]), cell, n, in_vertices);
     if(!defect.empty())
-      in.fail(types_array.line, defect);
+      in.fail(in_vertices ? line : types_array.line, defect);
     begin = end;
   }
 }

@@ -104,20 +104,24 @@ inline void write_VTU_points(std::ostream& out, VTU_appended_writer& data,
 
 inline void write_VTU_cells(std::ostream& out, VTU_appended_writer& data, const Mesh_file& mesh)
 {
-  const bool cells = !mesh.cells.empty();
-  const std::size_t count = cells ? mesh.cells.size() : mesh.simplices.size();
-  const std::size_t size = static_cast<std::size_t>(cells ? mesh.cell_size : mesh.simplex_size);
+  const std::size_t count = number_of_elements(mesh);
+  std::size_t size = 0;
+  for(std::size_t i = 0; i < count; ++i)
+    size += VTK_element(mesh, i).size;
   out << "      <Cells>\n";
-  write_VTU_array_tag(out, "Int64", "connectivity", 1, data.begin(count * size * 8));
-  for(std::size_t i = 0; i < count; ++i)
-    for(std::size_t c = 0; c < size; ++c)
-      data.put(static_cast<std::int64_t>(cells ? mesh.cells[i][c] : mesh.simplices[i][c]));
+  write_VTU_array_tag(out, "Int64", "connectivity", 1, data.begin(size * 8));
+  for(std::size_t i = 0; i < count; ++i) {
+    const VTK_element_of_mesh element = VTK_element(mesh, i);
+    for(std::size_t c = 0; c < element.size; ++c)
+      data.put(static_cast<std::int64_t>(element.ids[c]));
+  }
   write_VTU_array_tag(out, "Int64", "offsets", 1, data.begin(count * 8));
+  std::size_t end = 0;
   for(std::size_t i = 0; i < count; ++i)
-    data.put(static_cast<std::int64_t>((i + 1) * size));
+    data.put(static_cast<std::int64_t>(end += VTK_element(mesh, i).size));
   write_VTU_array_tag(out, "UInt8", "types", 1, data.begin(count));
   for(std::size_t i = 0; i < count; ++i)
-    data.put(static_cast<std::uint8_t>(VTK_type_of(mesh)));
+    data.put(static_cast<std::uint8_t>(VTK_element(mesh, i).type));
   out << "      </Cells>\n";
 }
 
@@ -128,9 +132,9 @@ inline void write_VTU_file(std::ostream& out, const Mesh_file& mesh, const std::
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
       << (machine_is_big_endian() ? "BigEndian" : "LittleEndian") << "\" header_type=\"UInt64\">\n"
       << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-      << mesh.simplices.size() + mesh.cells.size() << "\">\n";
+      << number_of_elements(mesh) << "\">\n";
   write_VTU_fields(out, data, point_fields, "PointData", points.size());
-  write_VTU_fields(out, data, cell_fields, "CellData", mesh.simplices.size() + mesh.cells.size());
+  write_VTU_fields(out, data, cell_fields, "CellData", number_of_elements(mesh));
   write_VTU_points(out, data, points);
   write_VTU_cells(out, data, mesh);
   out << "    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";

@@ -53,20 +53,42 @@ inline void check_simplices(const std::string& path, const Mesh_file& mesh)
   }
 }
 
+// Mixed cells: one size per cell, each that of a solid cell kind.
+inline void check_cell_sizes(const std::string& path, const Mesh_file& mesh)
+{
+  if(mesh.cell_size != Mesh_file::mixed_cells) {
+    if(!mesh.cell_sizes.empty())
+      throw Write_error(path, "cell_sizes has " + std::to_string(mesh.cell_sizes.size())
+                                  + " entries but cell_size is " + std::to_string(mesh.cell_size)
+                                  + ", not mixed_cells (-1)");
+    return;
+  }
+  if(mesh.cell_sizes.size() != mesh.cells.size())
+    throw Write_error(path, "cell_sizes has " + std::to_string(mesh.cell_sizes.size()) + " entries but there are "
+                                + std::to_string(mesh.cells.size()) + " cells");
+  for(std::size_t i = 0; i < mesh.cells.size(); ++i)
+    if(solid_cell_kind(mesh.cell_sizes[i]) == nullptr)
+      throw Write_error(path, "cell " + std::to_string(i) + " has " + std::to_string(mesh.cell_sizes[i])
+                                  + " vertices; a cell of mixed kinds has 4 (tetrahedron), 5 (pyramid), "
+                                    "6 (prism) or 8 (hexahedron)");
+}
+
 inline void check_cells(const std::string& path, const Mesh_file& mesh)
 {
   const int k = mesh.cell_size;
-  if(k != 4 && k != 8 && !(k == 0 && mesh.cells.empty()))
-    throw Write_error(path, "cell_size is " + std::to_string(k) + "; expected 4 or 8");
+  if(k != 4 && k != 8 && k != Mesh_file::mixed_cells && !(k == 0 && mesh.cells.empty()))
+    throw Write_error(path, "cell_size is " + std::to_string(k) + "; expected 4, 8 or mixed_cells (-1)");
   if(!mesh.cells.empty() && !mesh.simplices.empty())
     throw Write_error(path, "the mesh has both simplices and cells; a file holds one element type");
-  if(k == 8 && (mesh.rest_dimension == 2 || mesh.map_dimension == 2))
-    throw Write_error(path, "hexahedra need 3D positions, but a dimension is 2");
+  check_cell_sizes(path, mesh);
+  if(mesh.has_solid_cells() && (mesh.rest_dimension == 2 || mesh.map_dimension == 2))
+    throw Write_error(path, std::string(k == 8 ? "hexahedra" : "cells of mixed kinds")
+                                + " need 3D positions, but a dimension is 2");
   const std::size_t n = mesh.number_of_vertices();
   for(std::size_t i = 0; i < mesh.cells.size(); ++i) {
-    std::string defect = simplex_defect(mesh.cells[i], k, n, 0);
+    std::string defect = simplex_defect(mesh.cells[i], static_cast<int>(mesh.size_of_cell(i)), n, 0);
     if(!defect.empty())
-      throw Write_error(path, std::string(cell_name(k)) + " " + std::to_string(i) + ": " + defect);
+      throw Write_error(path, cell_name_in(mesh, i) + " " + std::to_string(i) + ": " + defect);
   }
 }
 
@@ -113,8 +135,9 @@ inline void check_triangles_only(const std::string& path, const Mesh_file& mesh,
 inline void check_faces_only(const std::string& path, const Mesh_file& mesh, const char* format)
 {
   check_triangles_only(path, mesh, format);
-  if(mesh.cell_size == 8)
-    throw Write_error(path, std::string(format) + " stores faces only, not hexahedra");
+  if(mesh.has_solid_cells())
+    throw Write_error(path, std::string(format) + " stores faces only, not "
+                                + (mesh.cell_size == 8 ? "hexahedra" : "cells of mixed kinds (pyramids, prisms...)"));
 }
 
 // The layout of welded vertices (OBJ seams as duplicated `v`) must name,

@@ -3,6 +3,8 @@
 #ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_SIMPLEX_CHECK_H
 #define CGAL_MESH_UNTANGLING_IO_INTERNAL_SIMPLEX_CHECK_H
 
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
+
 #include <array>
 #include <cstddef>
 #include <string>
@@ -17,6 +19,8 @@ inline const char* simplex_name(int simplex_size)
   return simplex_size == 4 ? "tetrahedron" : "triangle";
 }
 
+// The cells of a mesh of `cell_size` 4 or 8; those of mixed kinds are named
+// by their size with solid_cell_name() (where 4 is a tetrahedron).
 inline const char* cell_name(int cell_size)
 {
   return cell_size == 8 ? "hexahedron" : "quadrilateral";
