@@ -13,6 +13,7 @@
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_options.h>
@@ -110,21 +111,28 @@ int geometry_dimension(const Points& p)
   return 2;
 }
 
-/// The element kinds by the names the package uses, and the vertices of each.
+/// The element kinds by the names the package uses, and the vertices of
+/// each.  "cells": 3D cells of mixed kinds, one per row of 8 columns, each
+/// row its cell's ids (4 tetrahedron, 5 pyramid, 6 prism, 8 hexahedron)
+/// then -1s.
 struct Kind { const char* name; int simplex_size, cell_size; };
-constexpr Kind kinds[] = {{"triangles", 3, 0}, {"tetrahedra", 4, 0}, {"quadrilaterals", 0, 4}, {"hexahedra", 0, 8}};
+constexpr Kind kinds[] = {{"triangles", 3, 0}, {"tetrahedra", 4, 0}, {"quadrilaterals", 0, 4}, {"hexahedra", 0, 8},
+                          {"cells", 0, Mesh_file::mixed_cells}};
+constexpr int columns_of(const Kind& k) { return k.simplex_size ? k.simplex_size : k.cell_size > 0 ? k.cell_size : 8; }
 
 Kind kind_of(const std::optional<std::string>& name, py::ssize_t columns, py::ssize_t vertex_columns)
 {
   if(name) {
     for(const Kind& k : kinds)
       if(*name == k.name) {
-        if(std::max(k.simplex_size, k.cell_size) != columns)
-          throw py::value_error("kind='" + *name + "' has " + std::to_string(std::max(k.simplex_size, k.cell_size)) +
-                                " vertices per element, but elements has " + std::to_string(columns) + " columns");
+        if(columns_of(k) != columns)
+          throw py::value_error("kind='" + *name + "' has " + std::to_string(columns_of(k)) +
+                                (k.cell_size < 0 ? " columns" : " vertices per element") + ", but elements has " +
+                                std::to_string(columns) + " columns");
         return k;
       }
-    throw py::value_error("kind='" + *name + "': expected 'triangles', 'tetrahedra', 'quadrilaterals' or 'hexahedra'");
+    throw py::value_error("kind='" + *name + "': expected 'triangles', 'tetrahedra', 'quadrilaterals', 'hexahedra' "
+                          "or 'cells'");
   }
   switch(columns) {
     case 3: return kinds[0];
@@ -152,6 +160,32 @@ void copy_elements(const Ids& ids, int size, std::size_t n, const char* element_
     }
     const std::string defect = IO::internal::simplex_defect(out[std::size_t(k)], size, n, 0);
     if(!defect.empty()) throw py::value_error(name + ": " + element_name + " " + std::to_string(k) + ": " + defect);
+  }
+}
+
+/// Puts the rows of `ids` (8 columns: a cell's vertex ids, then -1s) into
+/// `mesh`'s cells of mixed kinds, checked as the readers check a file's.
+void copy_mixed_cells(const Ids& ids, std::size_t n, Mesh_file& mesh)
+{
+  const auto r = ids.unchecked<2>();
+  mesh.cells.assign(std::size_t(r.shape(0)), std::array<std::size_t, 8>{});
+  mesh.cell_sizes.assign(std::size_t(r.shape(0)), 0);
+  for(py::ssize_t k = 0; k < r.shape(0); ++k) {
+    int size = 0;
+    while(size < 8 && r(k, size) >= 0) ++size;
+    for(int i = size; i < 8; ++i)
+      if(r(k, i) != -1)
+        throw py::value_error("elements: cell " + std::to_string(k) + " has " + std::to_string(r(k, i)) +
+                              " in column " + std::to_string(i) + " after its ids (a cell's ids, then -1s)");
+    if(IO::internal::solid_cell_kind(size) == nullptr)
+      throw py::value_error("elements: cell " + std::to_string(k) + " has " + std::to_string(size) +
+                            " vertex ids, not 4 (tetrahedron), 5 (pyramid), 6 (prism) or 8 (hexahedron)");
+    mesh.cell_sizes[std::size_t(k)] = static_cast<unsigned char>(size);
+    for(int i = 0; i < size; ++i) mesh.cells[std::size_t(k)][std::size_t(i)] = std::size_t(r(k, i));
+    const std::string defect = IO::internal::simplex_defect(mesh.cells[std::size_t(k)], size, n, 0);
+    if(!defect.empty())
+      throw py::value_error("elements: " + IO::internal::cell_name_in(mesh, std::size_t(k)) + " " +
+                            std::to_string(k) + ": " + defect);
   }
 }
 
@@ -199,7 +233,7 @@ Problem make_problem(const py::handle& vertices, const py::handle& elements, con
 
   const Kind kind = kind_of(kind_name, ids.shape(1), map.shape(1));
   // (as the readers decide: tetrahedra and hexahedra are 3D whatever their z)
-  const bool solid = kind.simplex_size == 4 || kind.cell_size == 8;
+  const bool solid = kind.simplex_size == 4 || kind.cell_size == 8 || kind.cell_size == Mesh_file::mixed_cells;
   mesh.map = to_points(map);
   mesh.map_dimension = solid && map.shape(1) == 3 ? 3 : geometry_dimension(map);
   if(rest_points) {
@@ -216,6 +250,9 @@ Problem make_problem(const py::handle& vertices, const py::handle& elements, con
   if(kind.simplex_size) {
     mesh.simplex_size = kind.simplex_size;
     copy_elements(ids, kind.simplex_size, n, IO::internal::simplex_name(kind.simplex_size), "elements", mesh.simplices);
+  } else if(kind.cell_size == Mesh_file::mixed_cells) {
+    mesh.cell_size = kind.cell_size;
+    copy_mixed_cells(ids, n, mesh);
   } else {
     mesh.cell_size = kind.cell_size;
     copy_elements(ids, kind.cell_size, n, IO::internal::cell_name(kind.cell_size), "elements", mesh.cells);
@@ -278,6 +315,16 @@ Ids ids_of(const std::vector<std::array<std::size_t, N>>& elements, int size)
   auto w = out.mutable_unchecked<2>();
   for(std::size_t k = 0; k < elements.size(); ++k)
     for(int i = 0; i < size; ++i) w(py::ssize_t(k), i) = std::int64_t(elements[k][std::size_t(i)]);
+  return out;
+}
+
+/// The cells of `mesh` in 8 columns, a cell's ids then -1s (kind "cells").
+Ids mixed_cell_ids(const Mesh_file& mesh)
+{
+  Ids out = ids_of(mesh.cells, 8);
+  auto w = out.mutable_unchecked<2>();
+  for(std::size_t k = 0; k < mesh.cells.size(); ++k)
+    for(std::size_t i = mesh.size_of_cell(k); i < 8; ++i) w(py::ssize_t(k), py::ssize_t(i)) = -1;
   return out;
 }
 
@@ -543,7 +590,8 @@ Python_mesh read_file(const std::string& path, const py::handle& weld)
   Python_mesh m;
   m.point_fields = fields_dict(point_fields);
   m.cell_fields = fields_dict(cell_fields);
-  m.kind = mesh.has_corner_map() || mesh.simplex_size || mesh.cell_size ? element_kind(mesh) : "";
+  m.kind = mesh.cell_size == Mesh_file::mixed_cells ? "cells"
+         : mesh.has_corner_map() || mesh.simplex_size || mesh.cell_size ? element_kind(mesh) : "";
   const auto columns = [](int dimension) { return dimension == 2 ? 2 : 3; };
   if(mesh.has_corner_map()) {
     m.vertices = map_array(mesh, 2);
@@ -555,7 +603,8 @@ Python_mesh read_file(const std::string& path, const py::handle& weld)
       std::swap(mesh.map_dimension, mesh.rest_dimension);
     }
     m.vertices = map_array(mesh, columns(mesh.map_dimension));
-    m.elements = mesh.simplex_size ? ids_of(mesh.simplices, mesh.simplex_size) : ids_of(mesh.cells, mesh.cell_size);
+    m.elements = mesh.simplex_size ? ids_of(mesh.simplices, mesh.simplex_size)
+               : mesh.cell_size == Mesh_file::mixed_cells ? mixed_cell_ids(mesh) : ids_of(mesh.cells, mesh.cell_size);
   }
   if(!mesh.rest.empty()) m.rest = points_of(mesh.rest, columns(mesh.rest_dimension));
   if(mesh.has_fixed) m.fixed = ids_vector(mesh.fixed);
@@ -811,7 +860,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
 
   py::class_<Python_mesh>(m, "Mesh", "A mesh file's content as arrays (read()); pass them to untangle(), "
                                      "check_local_invertibility() or write() by the same names.")
-    .def_readonly("kind", &Python_mesh::kind, "'triangles', 'tetrahedra', 'quadrilaterals' or 'hexahedra'")
+    .def_readonly("kind", &Python_mesh::kind, "'triangles', 'tetrahedra', 'quadrilaterals', 'hexahedra' or 'cells' (mixed 3D cells: 8 columns, a cell's ids then -1s)")
     .def_readonly("vertices", &Python_mesh::vertices, "n x 2 or n x 3 float64: the map (seamless: texture coordinates)")
     .def_readonly("elements", &Python_mesh::elements, "m x k int64 vertex ids (seamless: texture coordinate ids)")
     .def_readonly("rest", &Python_mesh::rest, "the rest (target) positions, or None (OBJ: the v lines)")

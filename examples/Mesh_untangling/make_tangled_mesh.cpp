@@ -22,6 +22,7 @@
 // the uv of half of the vertices off the seams.
 #include "generators.h"
 #include "memory_reuse.h"
+#include "problem_files.h"
 #include "seamless_generators.h"
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
@@ -35,74 +36,12 @@
 #include <string>
 #include <vector>
 
-namespace {
-
 namespace IO = CGAL::Mesh_untangling::IO;
-
-/// NAME-suffix beside OUTPUT = NAME.EXT.
-std::string companion(const std::string& output, const std::string& suffix)
-{
-  std::filesystem::path path(output);
-  return (path.parent_path() / (path.stem().string() + suffix)).string();
-}
-
-/// `path` as one shell word: single-quoted unless it is made of safe characters only.
-std::string shell_word(const std::string& path)
-{
-  const bool safe = !path.empty() && path.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                            "0123456789_-+.,/:@%=") == std::string::npos;
-  if(safe) return path;
-  std::string quoted = "'";
-  for(char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-/// Writes the mesh and the companions its format needs; all of them or none.
-/// Returns the untangle_mesh arguments that read them back.
-std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
-{
-  const std::string extension = IO::internal::lowercase_extension(output);
-  if(extension == ".input") {
-    IO::write_mesh_file(output, mesh);
-    return "";
-  }
-  std::vector<std::string> written;
-  std::string arguments;
-  try {
-    // (a .vtk or .vtu holds them as point data, a .msh as a group)
-    if(extension != ".vtk" && extension != ".vtu" && extension != ".msh") {
-      const std::string fixed = companion(output, "-fixed.txt");
-      IO::write_handles(fixed, mesh.fixed);
-      written.push_back(fixed);
-      arguments += " --fixed " + shell_word(fixed);
-    }
-    if(extension != ".obj") {   // (an .obj holds the rest as its domain)
-      const std::string rest = companion(output, "-rest" + std::filesystem::path(output).extension().string());
-      IO::Mesh_file grid;   // the geometry only
-      grid.simplex_size = mesh.simplex_size;
-      grid.simplices = mesh.simplices;
-      grid.cell_size = mesh.cell_size;
-      grid.cells = mesh.cells;
-      grid.map = mesh.rest;
-      grid.map_dimension = mesh.rest_dimension;
-      IO::write_mesh_file(rest, grid);
-      written.push_back(rest);
-      arguments += " --rest " + shell_word(rest);
-    }
-    IO::write_mesh_file(output, mesh);
-  } catch(...) {
-    for(const std::string& path : written) std::remove(path.c_str());
-    throw;
-  }
-  return arguments;
-}
-
-} // namespace
 
 int main(int argc, char** argv)
 {
   Mesh_untangling_tools::reuse_freed_memory();
-  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase "
+  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|mixedcube|torus|seamcube|pillow|staircase "
                             "N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }
   const std::string shape = argv[1];
@@ -114,8 +53,9 @@ int main(int argc, char** argv)
   const long seed = std::strtol(argv[4], &end, 10);
   const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow" || shape == "staircase";
   if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "quadsurface" && shape != "hexcube" &&
-      !seamless) || !n_ok || !amplitude_ok || *end != 0 || seed < 0) {
-    std::cerr << usage << "N in [2, 2000], AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
+      shape != "mixedcube" && !seamless) || !n_ok || (shape == "mixedcube" && n < 3) || !amplitude_ok || *end != 0 ||
+     seed < 0) {
+    std::cerr << usage << "N in [2, 2000] (mixedcube: [3, 2000]), AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
     return 2;
   }
   namespace T = Mesh_untangling_tools;
@@ -136,25 +76,26 @@ int main(int argc, char** argv)
     }
     std::cout << argv[5] << ": " << surface.rest.size() << " vertices, " << surface.simplices.size()
               << " triangles, " << surface.corner_map.size() << " texture coordinates (wedges), uv of " << moved
-              << " vertices moved\nuntangle it with: untangle_mesh " << shell_word(argv[5]) << "\n";
+              << " vertices moved\nuntangle it with: untangle_mesh " << T::shell_word(argv[5]) << "\n";
     return 0;
   }
   auto mesh = shape == "square" ? T::make_square_grid(n) : shape == "cube" ? T::make_cube_grid(n)
             : shape == "quadsquare" ? T::make_quad_square_grid(n) : shape == "quadsurface" ? T::make_quad_surface_grid(n)
-            : T::make_hex_cube_grid(n);
+            : shape == "hexcube" ? T::make_hex_cube_grid(n) : T::make_mixed_cube_grid(n);
   Mesh_untangling_tools::perturb_interior(mesh, n, amplitude, static_cast<std::uint32_t>(seed));
   std::string arguments;
   try {
-    arguments = write_problem(argv[5], mesh);
+    arguments = T::write_problem(argv[5], mesh);
   } catch(const IO::Write_error& e) {
     std::cerr << "make_tangled_mesh: error: " << e.what() << "\n";
     return 2;
   }
   const char* kind = mesh.cell_size == 4 ? "quadrilaterals" : mesh.cell_size == 8 ? "hexahedra"
+                   : mesh.cell_size == IO::Mesh_file::mixed_cells ? "cells (tetrahedra, pyramids, prisms, hexahedra)"
                    : mesh.simplex_size == 3 ? "triangles" : "tetrahedra";
   std::cout << argv[5] << ": " << mesh.map.size() << " vertices, " << mesh.simplices.size() + mesh.cells.size() << " "
             << kind << ", " << mesh.fixed.size() << " fixed\n";
   if(!arguments.empty())
-    std::cout << "untangle the same problem with: untangle_mesh " << shell_word(argv[5]) << arguments << "\n";
+    std::cout << "untangle the same problem with: untangle_mesh " << T::shell_word(argv[5]) << arguments << "\n";
   return 0;
 }

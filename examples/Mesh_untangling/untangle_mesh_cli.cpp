@@ -16,6 +16,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Output_files.h>
 #include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
+#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
@@ -252,7 +253,7 @@ Mesh_file read_problem(const Arguments& args)
                         std::to_string(mesh.map.size()));
     if(!rest.simplices.empty() && rest.simplices != mesh.simplices)
       throw Usage_error(first_element_difference(args, rest, mesh));
-    if((!rest.cells.empty() || !rest.simplices.empty()) && rest.cells != mesh.cells)
+    if((!rest.cells.empty() || !rest.simplices.empty()) && (rest.cells != mesh.cells || rest.cell_sizes != mesh.cell_sizes))
       throw Usage_error(args.rest + ": its cells are not " + args.input + "'s: the rest must have the input's "
                         "elements, in the same order");
     mesh.rest = points;
@@ -301,8 +302,9 @@ void check_output_format(const std::string& output, const Mesh_file& mesh)
   const std::string ext = lowercase_extension(output);
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
     throw Usage_error(output + ": tetrahedra cannot be written as " + ext + " (use .vtk, .vtu, .mesh, .msh or .input)");
-  if(mesh.cell_size == 8 && (ext == ".obj" || ext == ".off" || ext == ".input"))
-    throw Usage_error(output + ": hexahedra cannot be written as " + ext + " (use .vtk, .vtu, .mesh or .msh)");
+  if(mesh.has_solid_cells() && (ext == ".obj" || ext == ".off" || ext == ".input"))
+    throw Usage_error(output + ": " + element_kind(mesh) + " cannot be written as " + ext +
+                      " (use .vtk, .vtu, .mesh or .msh)");
   if(mesh.cell_size == 4 && ext == ".input")
     throw Usage_error(output + ": quadrilaterals cannot be written as .input (use .vtk, .vtu, .mesh, .msh, .obj or .off)");
   if(ext == ".input" && mesh.rest.empty())
@@ -460,6 +462,17 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
     // Cells are judged per cell, on their corner simplices: stars are not checked.
     j["stars_checked"] = false;
     j["inverted_cell_ids"] = v.inverted_cell_ids;
+    nlohmann::ordered_json kinds = nlohmann::ordered_json::array();
+    for(std::size_t c : v.inverted_cell_ids) kinds.push_back(MU::IO::internal::cell_name_in(mesh, c));
+    j["inverted_cell_kinds"] = kinds;
+    if(mesh.cell_size == Mesh_file::mixed_cells) {
+      nlohmann::ordered_json by_kind = nlohmann::ordered_json::object();
+      for(std::size_t c = 0; c < mesh.cells.size(); ++c) {
+        nlohmann::ordered_json& count = by_kind[MU::IO::internal::cell_name_in(mesh, c)];
+        count = count.is_null() ? 1 : count.get<std::size_t>() + 1;
+      }
+      j["cells_by_kind"] = by_kind;
+    }
     j["min_scaled_jacobian_before"] = c.before.min_scaled_jacobian;
     j["min_scaled_jacobian_after"] = v.min_scaled_jacobian;
   }
@@ -758,6 +771,14 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    "checked: the corner simplices of cells overlap)\n", element_kind(mesh),
                    run.checks.before.inverted_cell_ids.size(), verdict.inverted_cell_ids.size(),
                    run.checks.before.min_scaled_jacobian, verdict.min_scaled_jacobian);
+    if(mesh.cell_size != 0 && !verdict.inverted_cell_ids.empty()) {
+      std::string named;
+      for(std::size_t i = 0; i < verdict.inverted_cell_ids.size() && i < 10; ++i)
+        named += (i ? ", " : "") + MU::IO::internal::cell_name_in(mesh, verdict.inverted_cell_ids[i]) + " " +
+                 std::to_string(verdict.inverted_cell_ids[i]);
+      std::fprintf(stderr, "inverted cells left: %s%s\n", named.c_str(),
+                   verdict.inverted_cell_ids.size() > 10 ? ", ..." : "");
+    }
     if(run.checks.boundary_after.checked)
       std::fprintf(stderr, "boundary self-intersections (pairs of boundary %s): %zu -> %zu\n",
                    element_dimension(mesh) == 2 ? "edges" : "triangles", run.checks.boundary_before.intersecting_pairs,

@@ -504,14 +504,18 @@ struct Rest_point_of<true, NamedParameters, Point>
 
 /// \ingroup PkgMeshUntanglingRef
 /// Untangles a point/cell soup of quadrilaterals (`Point_2` points, cells of
-/// 4 point indices, counter-clockwise) or hexahedra (`Point_3` points, cells
-/// of 8 point indices in VTK's order, see `Mesh_untangling::cell_corners()`).
-/// The points are the (tangled) map and receive the result.
+/// 4 point indices, counter-clockwise) or of 3D cells (`Point_3` points):
+/// hexahedra (8 point indices in VTK's order, see `Mesh_untangling::cell_corners()`),
+/// alone or mixed with tetrahedra (4), pyramids (5) and prisms (6), each
+/// told by its number of indices, in the vertex orders of
+/// `Mesh_untangling::corners_of()`.  The points are the (tangled) map and
+/// receive the result.
 ///
-/// Each cell enters the energy as its corner simplices (4 triangles, resp. 8
-/// tetrahedra: `Mesh_untangling::corner_simplices()`), whose targets are the
-/// corners of the rest cell (or of the unit square or cube), each weighted by
-/// a quarter (an eighth) of the rest cell's volume, so that a cell counts once.
+/// Each cell enters the energy as its corner simplices (4 triangles per
+/// quadrilateral; 8, 6, 4 and 1 tetrahedra per hexahedron, prism, pyramid and
+/// tetrahedron: `Mesh_untangling::corner_simplices()`), whose targets are the
+/// corners of the rest cell (or of the cell of its kind with edges of length
+/// 1), each weighted by its share of the rest cell's volume, so that a cell counts once.
 /// A cell is untangled when all its corner simplices are positive (exact
 /// predicates): `Untangling_result::inverted_before`, `inverted_after`,
 /// `input_defects` and `number_of_elements` count cells, `min_scaled_det_*`
@@ -525,7 +529,8 @@ struct Rest_point_of<true, NamedParameters, Point>
 ///
 /// \tparam ConcurrencyTag as for `untangle_simplex_soup()`
 /// \tparam PointRange a random access range of `Point_2` or `Point_3`
-/// \tparam CellRange a range of cells, each a random access range of 4 (quadrilaterals) or 8 (hexahedra) point indices
+/// \tparam CellRange a range of cells, each a random access range of 4 (quadrilaterals), or of 4, 5, 6 or 8
+///         (tetrahedra, pyramids, prisms, hexahedra) point indices
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_is_constrained_map}
@@ -537,12 +542,13 @@ struct Rest_point_of<true, NamedParameters, Point>
 ///     \cgalParamDescription{the rest shape, one point per point: each cell's target is its rest cell; the rest
 ///       of quadrilaterals may be a 3D surface, whose corner triangles are laid flat (a uv map of a quad mesh)}
 ///     \cgalParamType{a random access range of points of the map's type, or of `Point_3` for quadrilaterals}
-///     \cgalParamDefault{unit squares (unit cubes), scaled to the map's area (volume)}
+///     \cgalParamDefault{unit squares (cells of their kind with edges of length 1), scaled to the map's area (volume)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations, maximum_running_time, callback, Mesh_untangling::parameters::progress_callback,
 ///     theta, solver, target_scaling, continuation, continuation_steps, element_figures_output}
-///     \cgalParamDescription{as for `untangle_simplex_soup()`; element figures are per corner simplex, corner i of
-///       cell c at K c + i}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`; element figures are per corner simplex, the
+///       cells' corners one cell after the other (corner i of cell c at K c + i when every cell has K corners,
+///       `Mesh_untangling::Corner_simplices::first_corner`)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -589,7 +595,7 @@ untangle_cell_soup(PointRange& points, const CellRange& cells, const NamedParame
     input, np, identity, identity,
     [&](const Mesh_untangling::internal::Untangling_input<d>& r) { Mesh_untangling::internal::write_back_soup<d>(r, points); },
     ConcurrencyTag());
-  result.number_of_elements = corners.simplices.size() / corners.corners_per_cell;
+  result.number_of_elements = corners.number_of_cells();
   return result;
 }
 

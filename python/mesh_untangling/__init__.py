@@ -49,7 +49,12 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         or n x 3 with every z = 0.  Seamless maps: the texture coordinates.
     elements : array_like, m x 3, m x 4 or m x 8 int
         0-based vertex ids: triangles (3), tetrahedra (4, with n x 3 vertices),
-        quadrilaterals (4, with n x 2 vertices) or hexahedra (8, VTK order).
+        quadrilaterals (4, with n x 2 vertices) or hexahedra (8, VTK order);
+        with ``kind="cells"``, 3D cells of mixed kinds in 8 columns, each row
+        a cell's ids then -1s: tetrahedra (4), pyramids (5, the base
+        counter-clockwise seen from the apex), prisms (6, Gmsh's order: the
+        bottom triangle counter-clockwise seen from the top one) and
+        hexahedra (8).
     rest : array_like, n x 2 or n x 3 float, optional
         Rest (target) positions of the same vertices: the shape every element
         should have, and the orientation it must have.  3D rest triangles
@@ -109,8 +114,9 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         sliding vertex ends on its target: ``result.max_distance_to_target``.
     feature_angle : float in (0, 90]
         Degrees, with ``slide_boundary`` (default 35).
-    kind : None or "triangles", "tetrahedra", "quadrilaterals", "hexahedra"
-        What ``elements`` are; default from their columns and the vertices'.
+    kind : None or "triangles", "tetrahedra", "quadrilaterals", "hexahedra", "cells"
+        What ``elements`` are; default from their columns and the vertices'
+        ("cells", mixed 3D cells, is never the default).
     rest_elements : array_like, m x 3 int, optional
         A seamless map: the surface's triangles (ids into ``rest``), row k the
         same triangle as row k of ``elements`` (ids into the texture

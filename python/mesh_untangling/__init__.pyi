@@ -8,7 +8,7 @@ import numpy.typing as npt
 
 __version__: str
 
-Kind = Literal["triangles", "tetrahedra", "quadrilaterals", "hexahedra"]
+Kind = Literal["triangles", "tetrahedra", "quadrilaterals", "hexahedra", "cells"]
 ArrayLike = npt.ArrayLike
 Path = Union[str, PathLike]
 

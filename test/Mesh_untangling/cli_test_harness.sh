@@ -4,8 +4,9 @@
 # It checks the two programs and makes their paths absolute (UNTANGLE, MAKE),
 # moves into a temporary folder that is removed at exit (read-only folders
 # included), and defines `check DESCRIPTION COMMAND...` with its counters,
-# and the steps of the tangled cube's round trip (cube_make, cube_untangle,
-# cube_read_back) with their JSON helpers.
+# the steps of the tangled cube's round trip (cube_make, cube_untangle,
+# cube_read_back) with their JSON helpers, and checks on legacy .vtk files
+# (same_fixed, has_VTK_cell_types).
 
 harness_name=$1
 if [ $# -lt 3 ] || [ ! -x "$2" ] || [ ! -x "$3" ]; then
@@ -47,6 +48,8 @@ json_get() { grep -E "^  \"$2\": " "$1" 2> /dev/null | head -n 1 | sed -E 's/^  
 json_is() { [ "$(json_get "$1" "$2")" = "$3" ]; }
 json_positive() { local v; v=$(json_get "$1" "$2"); [[ "$v" =~ ^[0-9]+$ ]] && [ "$v" -gt 0 ]; }
 ran_well() { [ "$(cat "$1.rc")" = 0 ]; }
+# json FILE KEY: the value of a top-level key of a JSON report, as Python prints it
+json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 
 # cube_make EXT: make_tangled_mesh writes cube.EXT and cube-rest.EXT, the
 # fixed vertices in the file (no cube-fixed.txt).
@@ -78,4 +81,32 @@ cube_read_back() {
   check "the result read back: exit 0" ran_well again
   check "the result read back: no inverted tetrahedron" json_is again.json inverted_before 0
   check "the result read back: the same fixed vertices" json_is again.json fixed_vertices 98
+}
+
+# same_fixed IN OUT: the vertices that IN's point array 'fixed' flags (legacy
+# .vtk files) have the same coordinates in OUT, bit for bit, and IN flags some.
+same_fixed() {
+  python3 - "$@" << 'PY'
+import sys
+import legacy_vtk
+lines, _, a = legacy_vtk.read(sys.argv[1])
+b = legacy_vtk.points(sys.argv[2])
+k = next(i for i, l in enumerate(lines) if l.startswith('SCALARS fixed'))
+n = len(a)
+flags = [float(x) for l in lines[k + 2:] for x in l.split()][:n]
+moved = [v for v in range(n) if flags[v] != 0 and a[v] != b[v]]
+print('fixed vertices', sum(f != 0 for f in flags), 'moved', len(moved))
+sys.exit(1 if moved or not any(flags) else 0)
+PY
+}
+
+# has_VTK_cell_types FILE TYPE...: the cell types of the legacy .vtk FILE are these, no other.
+has_VTK_cell_types() {
+  python3 - "$@" << 'PY'
+import sys
+lines = open(sys.argv[1]).read().split('\n')
+k = next(i for i, l in enumerate(lines) if l.startswith('CELL_TYPES'))
+types = {int(t) for t in lines[k + 1:k + 1 + int(lines[k].split()[1])]}
+sys.exit(0 if types == {int(t) for t in sys.argv[2:]} else 1)
+PY
 }

@@ -5,7 +5,10 @@
 // CGAL::untangle_cell_soup (issue 25, part 2): tangled grids end with every
 // corner simplex positive, fixed vertices bitwise in place; the corner rule,
 // the per-cell verdict, the scaled Jacobian and the errors on bad cells;
-// quadrilaterals whose rest is a 3D surface (their corners laid flat).
+// quadrilaterals whose rest is a 3D surface (their corners laid flat);
+// tetrahedra, pyramids and prisms among hexahedra (issue 36, item 3).
+#include "generators.h"
+
 #include <CGAL/Mesh_untangling/cell_invertibility.h>
 #include <CGAL/Mesh_untangling/corner_simplices.h>
 #include <CGAL/Simple_cartesian.h>
@@ -140,11 +143,113 @@ void corner_rule()
   check(std::abs(t.weights[0] - 0.5) < 1e-15 && t.weights[0] == t.weights[3], "trapezoid of area 2: weights 2/4 each");
   // the scaled Jacobian: 1 on the unit cube, negative when a corner is pushed through
   std::vector<std::array<double, 3>> cube;
-  for(const auto& p : MU::internal::unit_cell<3, P3>()) cube.push_back({p.x(), p.y(), p.z()});
+  for(const auto& p : MU::internal::unit_cell<3, P3>(MU::Cell_kind::HEXAHEDRON)) cube.push_back({p.x(), p.y(), p.z()});
   check(MU::scaled_jacobian<3>(cube, hex[0]) == 1., "unit cube: scaled Jacobian 1");
   cube[6] = {0.2, 0.2, 0.2};
   check(MU::scaled_jacobian<3>(cube, hex[0]) < 0 && MU::check_cells<3>(cube, hex).inverted_elements == 1,
         "a cube with its vertex 6 pushed inside: negative scaled Jacobian, one inverted cell");
+}
+
+/// Each kind of 3D cell on its own: the corners of its ideal shape (edges
+/// of length 1) are positive, their weights add up to its volume, its
+/// scaled Jacobian is 1; pushed through, the cell is inverted and named by
+/// its id among cells of other kinds.
+void mixed_corner_rule()
+{
+  using P3 = K::Point_3;
+  const double s3 = std::sqrt(3.), s2 = std::sqrt(2.);
+  struct Case { MU::Cell_kind kind; std::size_t corners; double volume; };
+  const Case cases[] = {{MU::Cell_kind::TETRAHEDRON, 1, 1 / (6 * s2)}, {MU::Cell_kind::PYRAMID, 4, 1 / (3 * s2)},
+                        {MU::Cell_kind::PRISM, 6, s3 / 4}, {MU::Cell_kind::HEXAHEDRON, 8, 1.}};
+  for(const Case& c : cases) {
+    const std::string name = MU::cell_kind_name(c.kind);
+    const auto unit = MU::internal::unit_cell<3, P3>(c.kind);
+    std::vector<std::size_t> cell(unit.size());
+    for(std::size_t i = 0; i < cell.size(); ++i) cell[i] = i;
+    const std::vector<std::vector<std::size_t>> cells{cell};
+    const auto corners = MU::corner_simplices<3>(cells, std::vector<P3>(), unit.size());
+    bool positive = corners.simplices.size() == c.corners && corners.first_corner == std::vector<std::size_t>{0, c.corners};
+    double weight = 0;
+    for(std::size_t k = 0; k < corners.targets.size(); ++k) {
+      const auto& t = corners.targets[k];
+      positive = positive && CGAL::orientation(t[0], t[1], t[2], t[3]) == CGAL::POSITIVE;
+      for(int j = 0; j < 4; ++j) positive = positive && t[j] == unit[corners.simplices[k][j]];
+      weight += corners.weights[k];
+    }
+    check(positive, name + ": " + std::to_string(c.corners) + " positive corners, targets its ideal shape's");
+    check(std::abs(weight - c.volume) < 1e-14, name + ": the corners' weights add up to its volume (" +
+                                                 std::to_string(weight) + ")");
+    std::vector<std::array<double, 3>> at;
+    for(const auto& p : unit) at.push_back({p.x(), p.y(), p.z()});
+    check(std::abs(MU::scaled_jacobian<3>(at, cell) - 1) < 1e-14, name + ": scaled Jacobian 1 on its ideal shape");
+  }
+  // a tetrahedron, a pyramid and a prism on the faces of the unit cube: the pyramid's apex pushed below its base
+  std::vector<std::array<double, 3>> p{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
+                                       {1, 1, 1}, {0, 1, 1}, {0.5, 0.5, 1.5}, {2, 0, 0}, {2, 0, 1}, {0.5, 0.5, -1}};
+  const std::vector<std::vector<std::size_t>> cells{{0, 1, 2, 3, 4, 5, 6, 7}, {4, 5, 6, 7, 8},
+                                                    {1, 9, 2, 5, 10, 6}, {0, 3, 2, 11}};
+  MU::Invertibility_report r = MU::check_cells<3>(p, cells);
+  check(r.inverted_elements == 0 && r.number_of_elements == 4, "a hexahedron, pyramid, prism and tetrahedron: valid");
+  p[8] = {0.5, 0.5, 0.5};
+  r = MU::check_cells<3>(p, cells);
+  check(r.inverted_element_ids == std::vector<std::size_t>{1} && MU::scaled_jacobian<3>(p, cells[1]) < 0,
+        "the pyramid's apex below its base: cell 1 inverted, negative scaled Jacobian");
+  p[8] = {0.5, 0.5, 1.5};
+  p[10] = {2, 0, -1};   // the prism's top vertex 4 below its bottom triangle
+  r = MU::check_cells<3>(p, cells);
+  check(r.inverted_element_ids == std::vector<std::size_t>{2}, "the prism's top through its bottom: cell 2 inverted");
+  const std::vector<std::vector<std::size_t>> seven{{0, 1, 2, 3, 4, 5, 6}};
+  std::vector<P3> points(12, P3(0, 0, 0));
+  MU::Untangling_result bad = CGAL::untangle_cell_soup(points, seven);
+  check(bad.status == MU::Untangling_status::INVALID_INPUT &&
+          bad.message.find("cell 0 has 7 vertices, not 4 (tetrahedron), 5 (pyramid), 6 (prism) or 8") != std::string::npos,
+        "a 7-vertex 3D cell: invalid input naming it (" + bad.message + ")");
+  const std::vector<std::vector<std::size_t>> repeated{{0, 1, 2, 3, 4, 4}};
+  bad = CGAL::untangle_cell_soup(points, repeated);
+  check(bad.status == MU::Untangling_status::INVALID_INPUT && bad.message.find("prism 0 repeats vertex 4") != std::string::npos,
+        "a prism repeating a vertex: invalid input naming its kind (" + bad.message + ")");
+}
+
+/// The hex-dominant grid with tetrahedra, pyramids and prisms
+/// (make_mixed_cube_grid()), tangled with its boundary fixed, through
+/// CGAL::untangle_cell_soup: every corner of every kind ends positive,
+/// the fixed vertices in place; with unit targets and with the rest.
+void untangles_a_mixed_grid(bool with_rest)
+{
+  const std::string name = std::string("mixed grid 4") + (with_rest ? ", rest given" : ", unit targets");
+  Mesh_untangling_tools::Mesh_file m = Mesh_untangling_tools::make_mixed_cube_grid(4);
+  Mesh_untangling_tools::perturb_interior(m, 4, 0.8, 3);
+  std::vector<K::Point_3> points, rest;
+  for(const auto& p : m.map) points.emplace_back(p[0], p[1], p[2]);
+  for(const auto& p : m.rest) rest.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::vector<std::size_t>> cells;
+  std::size_t by_size[9] = {};
+  for(std::size_t c = 0; c < m.cells.size(); ++c) {
+    cells.emplace_back(m.cells[c].begin(), m.cells[c].begin() + std::ptrdiff_t(m.size_of_cell(c)));
+    ++by_size[m.size_of_cell(c)];
+  }
+  check(by_size[4] > 0 && by_size[5] > 0 && by_size[6] > 0 && by_size[8] > 0,
+        name + ": " + std::to_string(by_size[4]) + " tetrahedra, " + std::to_string(by_size[5]) + " pyramids, " +
+          std::to_string(by_size[6]) + " prisms, " + std::to_string(by_size[8]) + " hexahedra");
+  std::vector<bool> fixed(points.size(), false);
+  for(std::size_t v : m.fixed) fixed[v] = true;
+  const std::vector<K::Point_3> given = points;
+  const auto array_points = [](const std::vector<K::Point_3>& q) { return arrays<3>(q); };
+  const std::size_t inverted_given = MU::check_cells<3>(array_points(points), cells).inverted_elements;
+  const auto fixed_map = boost::make_function_property_map<std::size_t, bool>([&](std::size_t v) { return bool(fixed[v]); });
+  const auto np = CGAL::parameters::vertex_is_constrained_map(fixed_map).maximum_running_time(120.);
+  const MU::Untangling_result r = with_rest ? CGAL::untangle_cell_soup(points, cells, MU::parameters::rest_points(rest, np))
+                                            : CGAL::untangle_cell_soup(points, cells, np);
+  check(inverted_given > 0 && r.inverted_before == inverted_given,
+        name + ": the input has inverted cells (" + std::to_string(inverted_given) + ")");
+  check(r.is_locally_invertible() && r.inverted_after == 0 && r.number_of_elements == cells.size(),
+        name + ": untangled (" + MU::to_string(r.status) + "), cells counted");
+  const auto report = MU::check_cells<3>(array_points(points), cells);
+  check(report.inverted_elements == 0, name + ": every corner of every cell positive (exact)");
+  bool in_place = true;
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(fixed[v] && !(points[v] == given[v])) in_place = false;
+  check(in_place, name + ": fixed vertices bitwise in place");
 }
 
 /// Quadrilaterals whose rest is a 3D surface (a uv map of a quad mesh): each
@@ -235,6 +340,7 @@ void bad_cells_are_invalid_input()
 int main()
 {
   corner_rule();
+  mixed_corner_rule();
   bad_cells_are_invalid_input();
   surface_corner_rule();
   untangles_a_surface_grid();
@@ -242,6 +348,8 @@ int main()
   untangles_a_grid<2>(12, 0.9, false);
   untangles_a_grid<3>(5, 0.7, true);
   untangles_a_grid<3>(5, 0.7, false);
+  untangles_a_mixed_grid(true);
+  untangles_a_mixed_grid(false);
   std::printf("%s\n", failures == 0 ? "all passed" : "FAILURES");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

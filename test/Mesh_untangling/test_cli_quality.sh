@@ -12,7 +12,6 @@
 set -u
 . "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_quality "$@"
 
-json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 # gained REPORT MARGIN: the worst quality rose by MARGIN at least
 gained() {
   python3 -c "import json,sys; r=json.load(open(sys.argv[1])); \

@@ -17,7 +17,6 @@ set -u
 to_duplicated_vertices="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/obj_seams_as_duplicated_vertices.py"
 . "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_seams "$@"
 
-json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 # same_layout A B: the same v lines, as many vt lines, and faces with the same v and vt indices
 same_layout() {
   [ "$(grep '^v ' "$1")" = "$(grep '^v ' "$2")" ] &&

@@ -19,7 +19,6 @@ set -u
 MAKE_BLOCK=$(absolute "$3")
 DATA=${4:-}
 
-json() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 : > none.txt
 
 # fold IN OUT: IN's boundary vertices on [0, 1]^D moved along their faces
@@ -98,7 +97,7 @@ sys.exit(0 if worst <= tolerance else 1)
 EOF
 }
 
-for kind in hexcube cube quadsquare square; do
+for kind in hexcube mixedcube cube quadsquare square; do
   "$MAKE" $kind 4 0.6 1 $kind.vtk > /dev/null
   fold $kind.vtk $kind-folded.vtk
   rc=0
@@ -111,7 +110,7 @@ for kind in hexcube cube quadsquare square; do
   check "$kind: locally invertible" test "$(json $kind.json locally_invertible)" = True
   check "$kind: every vertex on its face, edge or corner" on_faces $kind.vtk $kind-out.vtk
   case $kind in
-    hexcube | cube) surfaces=54 curves=36 corners=8 ;;
+    hexcube | mixedcube | cube) surfaces=54 curves=36 corners=8 ;;
     *) surfaces=0 curves=12 corners=4 ;;
   esac
   check "$kind: $surfaces vertices on surfaces" test "$(json $kind.json vertices_sliding_on_surfaces)" = $surfaces

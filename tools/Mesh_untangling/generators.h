@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <random>
 
 namespace Mesh_untangling_tools {
@@ -127,6 +128,67 @@ inline Mesh_file make_hex_cube_grid(std::size_t n)
       for(std::size_t i = 0; i < n; ++i)
         m.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
                            id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+  return m;
+}
+
+/// A hex-dominant mesh of [0,1]^3 with all four kinds of 3D cells, as
+/// boundary layers and transitions make them, conforming: n^3 grid cells
+/// (n >= 3), those of the slab x < 1/n each split into two prisms (their
+/// triangles on the z faces, so that each prism column meets its
+/// neighbours on quadrilaterals), those of the slab x > 1 - 1/n each into
+/// six pyramids around a vertex at its centre, the pyramids whose base is
+/// on the face x = 1 into two tetrahedra each, the rest hexahedra.  Vertex
+/// orders as Mesh_file says (prisms Gmsh's); rest = map.
+inline Mesh_file make_mixed_cube_grid(std::size_t n)
+{
+  Mesh_file m = make_hex_cube_grid(n);
+  const std::vector<std::array<std::size_t, 8>> hexahedra = std::move(m.cells);
+  m.cells.clear();
+  m.cell_size = Mesh_file::mixed_cells;
+  const auto corner = [&](std::size_t v) { return m.rest[v]; };
+  const auto add = [&m](std::initializer_list<std::size_t> ids) {
+    std::array<std::size_t, 8> cell{};
+    std::copy(ids.begin(), ids.end(), cell.begin());
+    m.cells.push_back(cell);
+    m.cell_sizes.push_back(static_cast<unsigned char>(ids.size()));
+  };
+  // orients a pyramid (base b, apex a) so that its base turns counter-clockwise seen from its apex
+  const auto positive = [&](std::array<std::size_t, 4> b, std::size_t a) {
+    const auto e = [&](std::size_t to, std::size_t from, int c) { return corner(to)[c] - corner(from)[c]; };
+    const double det = e(b[1], b[0], 0) * (e(b[3], b[0], 1) * e(a, b[0], 2) - e(b[3], b[0], 2) * e(a, b[0], 1)) -
+                       e(b[1], b[0], 1) * (e(b[3], b[0], 0) * e(a, b[0], 2) - e(b[3], b[0], 2) * e(a, b[0], 0)) +
+                       e(b[1], b[0], 2) * (e(b[3], b[0], 0) * e(a, b[0], 1) - e(b[3], b[0], 1) * e(a, b[0], 0));
+    if(det < 0) std::swap(b[1], b[3]);
+    return b;
+  };
+  constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for(std::size_t c = 0; c < hexahedra.size(); ++c) {
+    const auto& h = hexahedra[c];
+    const std::size_t i = c % n;
+    if(i == 0) {
+      add({h[0], h[1], h[2], h[4], h[5], h[6]});
+      add({h[0], h[2], h[3], h[4], h[6], h[7]});
+    } else if(i + 1 == n) {
+      std::array<double, 3> centre{0, 0, 0};
+      for(std::size_t v : h)
+        for(int x = 0; x < 3; ++x) centre[x] += corner(v)[x] / 8;
+      const std::size_t apex = m.rest.size();
+      m.rest.push_back(centre);
+      for(const auto& face : faces) {
+        const auto b = positive({h[face[0]], h[face[1]], h[face[2]], h[face[3]]}, apex);
+        const bool on_boundary = std::all_of(b.begin(), b.end(), [&](std::size_t v) { return corner(v)[0] == 1.; });
+        if(on_boundary) {
+          add({b[0], b[1], b[2], apex});
+          add({b[0], b[2], b[3], apex});
+        } else {
+          add({b[0], b[1], b[2], b[3], apex});
+        }
+      }
+    } else {
+      add({h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]});
+    }
+  }
+  m.map = m.rest;
   return m;
 }
 

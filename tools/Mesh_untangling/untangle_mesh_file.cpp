@@ -23,6 +23,7 @@
 #include <cmath>
 #include <iterator>
 #include <set>
+#include <boost/container/static_vector.hpp>
 #include <type_traits>
 
 namespace Mesh_untangling_tools {
@@ -31,12 +32,13 @@ namespace MU = CGAL::Mesh_untangling;
 
 namespace {
 
+/// The cells of `mesh` as the package takes them: 3D cells of any kind, each of its own size.
 template <int d>
-std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> cells_of(const Mesh_file& mesh)
+std::vector<boost::container::static_vector<std::size_t, d == 2 ? 4 : 8>> cells_of(const Mesh_file& mesh)
 {
-  std::vector<std::array<std::size_t, d == 2 ? 4 : 8>> c(mesh.cells.size());
+  std::vector<boost::container::static_vector<std::size_t, d == 2 ? 4 : 8>> c(mesh.cells.size());
   for(std::size_t k = 0; k < c.size(); ++k)
-    for(std::size_t i = 0; i < c[k].size(); ++i) c[k][i] = mesh.cells[k][i];
+    c[k].assign(mesh.cells[k].begin(), mesh.cells[k].begin() + std::ptrdiff_t(mesh.size_of_cell(k)));
   return c;
 }
 
@@ -44,12 +46,12 @@ bool has_cells(const Mesh_file& mesh) { return mesh.cell_size != 0; }
 
 void check_shape(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
 {
-  if(mesh.simplex_size != 3 && mesh.simplex_size != 4 && mesh.cell_size != 4 && mesh.cell_size != 8)
-    throw Invalid_problem("the mesh has no triangles, tetrahedra, quadrilaterals or hexahedra");
+  if(mesh.simplex_size != 3 && mesh.simplex_size != 4 && mesh.cell_size != 4 && !mesh.has_solid_cells())
+    throw Invalid_problem("the mesh has no triangles, tetrahedra, quadrilaterals, hexahedra, prisms or pyramids");
   if(mesh.map_dimension == 0 || mesh.map.empty())
     throw Invalid_problem("the file has no map (positions) to untangle");
-  if(mesh.cell_size == 8 && mesh.rest_dimension == 2)
-    throw Invalid_problem("hexahedra need 3D rest positions");
+  if(mesh.has_solid_cells() && mesh.rest_dimension == 2)
+    throw Invalid_problem(std::string(mesh.cell_size == 8 ? "hexahedra" : "3D cells") + " need 3D rest positions");
   if(mesh.simplex_size == 3 || mesh.cell_size == 4)
     for(std::size_t v = 0; v < mesh.map.size(); ++v)
       if(mesh.map[v][2] != 0)
@@ -208,7 +210,7 @@ Untangling_result untangle(Mesh_file& mesh, const std::vector<bool>& is_fixed, c
   return result;
 }
 
-/// Quadrilaterals (d = 2) and hexahedra (d = 3) through the package's entry for cells.
+/// Quadrilaterals (d = 2) and 3D cells (d = 3) through the package's entry for cells.
 template <int d>
 Untangling_result untangle_cells(Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_options& options,
                                  Run_record* record)
@@ -361,15 +363,17 @@ void add_distortions(const Run_record& record, std::size_t elements, MU::IO::VTK
 template <int d>
 Map_fields measure_cells(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
 {
-  const std::size_t m = mesh.cells.size(), K = d == 2 ? 4 : 8, n = mesh.map.size();
+  const std::size_t m = mesh.cells.size(), n = mesh.map.size();
   const MU::Invertibility_report report = check_cells_of<d>(mesh, is_fixed);
+  std::vector<std::size_t> first;
+  MU::corner_simplex_indices<d>(cells_of<d>(mesh), n, &first);
   Map_fields f;
   f.verdict = check<d>(mesh, is_fixed);
   std::vector<double> det(m), shape(m, 0.), volume(m, 0.);
   for(std::size_t c = 0; c < m; ++c) {
-    det[c] = record.element_figures[K * c].det_J;
-    for(std::size_t i = 0; i < K; ++i) {
-      const MU::Element_figures& e = record.element_figures[K * c + i];
+    det[c] = record.element_figures[first[c]].det_J;
+    for(std::size_t k = first[c]; k < first[c + 1]; ++k) {
+      const MU::Element_figures& e = record.element_figures[k];
       det[c] = std::min(det[c], e.det_J);
       shape[c] = std::max(shape[c], e.shape_distortion);
       volume[c] = std::max(volume[c], e.volume_distortion);
@@ -416,8 +420,10 @@ Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, con
 
 void check_record(const Mesh_file& mesh, const Run_record& record)
 {
-  const std::size_t elements = mesh.simplices.size() + mesh.cells.size() * std::size_t(mesh.cell_size) +
-                               record.phantom_simplices.size();
+  std::size_t corners = 0;
+  for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+    corners += mesh.cell_size == 4 ? 4 : MU::corners_of<3>(*MU::cell_kind<3>(mesh.size_of_cell(c))).size();
+  const std::size_t elements = mesh.simplices.size() + corners + record.phantom_simplices.size();
   if(record.dimension != element_dimension(mesh) || record.element_figures.size() != elements)
     throw Invalid_problem("the run record does not belong to this mesh (" + std::to_string(elements) + " elements)");
 }
@@ -425,7 +431,7 @@ void check_record(const Mesh_file& mesh, const Run_record& record)
 template <int d>
 Boundary_verdict check_boundary(const Mesh_file& mesh)
 {
-  if(mesh.cell_size == 8) {
+  if(mesh.has_solid_cells()) {
     Boundary_verdict not_checked;
     not_checked.checked = false;
     return not_checked;
@@ -648,7 +654,7 @@ Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record)
 {
   check_shape(mesh, {});
   check_record(mesh, record);
-  if(has_cells(mesh)) throw Invalid_problem("no phantom element protects quadrilaterals or hexahedra");
+  if(has_cells(mesh)) throw Invalid_problem("no phantom element protects cells (quadrilaterals, hexahedra, prisms, pyramids)");
   Phantom_mesh p;
   p.mesh.simplex_size = mesh.simplex_size;
   p.mesh.simplices = record.phantom_simplices;
@@ -804,11 +810,14 @@ std::vector<bool> boundary_vertices(const Mesh_file& mesh)
 {
   // (number_of_vertices(): a per-corner map has no per-vertex map)
   if(has_cells(mesh)) {
-    const std::vector<char> b = mesh.cell_size == 4
-      ? MU::internal::cell_boundary_vertices<2>(mesh.number_of_vertices(), MU::corner_simplex_indices<2>(cells_of<2>(mesh), mesh.number_of_vertices()),
-                                                std::size_t(-1), 4)
-      : MU::internal::cell_boundary_vertices<3>(mesh.number_of_vertices(), MU::corner_simplex_indices<3>(cells_of<3>(mesh), mesh.number_of_vertices()),
-                                                std::size_t(-1), 8);
+    const auto of_cells = [&mesh](auto dimension) {
+      constexpr int d = decltype(dimension)::value;
+      std::vector<std::size_t> first;
+      const auto corners = MU::corner_simplex_indices<d>(cells_of<d>(mesh), mesh.number_of_vertices(), &first);
+      return MU::internal::cell_boundary_vertices<d>(mesh.number_of_vertices(), corners, first);
+    };
+    const std::vector<char> b = mesh.cell_size == 4 ? of_cells(std::integral_constant<int, 2>())
+                                                    : of_cells(std::integral_constant<int, 3>());
     return std::vector<bool>(b.begin(), b.end());
   }
   const std::vector<char> b = mesh.simplex_size == 3
@@ -825,7 +834,7 @@ int element_dimension(const Mesh_file& mesh)
 const char* element_kind(const Mesh_file& mesh)
 {
   return mesh.cell_size == 4 ? "quadrilaterals" : mesh.cell_size == 8 ? "hexahedra"
-       : mesh.simplex_size == 4 ? "tetrahedra" : "triangles";
+       : mesh.cell_size == Mesh_file::mixed_cells ? "3D cells" : mesh.simplex_size == 4 ? "tetrahedra" : "triangles";
 }
 
 } // namespace Mesh_untangling_tools

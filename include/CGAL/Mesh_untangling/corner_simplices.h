@@ -4,8 +4,9 @@
 #define CGAL_MESH_UNTANGLING_CORNER_SIMPLICES_H
 
 /// \file corner_simplices.h
-/// Quadrilaterals and hexahedra as their corner simplices: the one rule by
-/// which cells enter the untangling energy and its verdict.
+/// Cells (quadrilaterals; tetrahedra, pyramids, prisms, hexahedra) as their
+/// corner simplices: the one rule by which cells enter the untangling
+/// energy and its verdict.
 
 #include <CGAL/Mesh_untangling/internal/flatten_triangle.h>
 
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -44,21 +46,106 @@ constexpr std::array<std::array<int, d + 1>, (d == 2 ? 4 : 8)> cell_corners()
 }
 
 /// \ingroup PkgMeshUntanglingRef
-/// A cell soup as the corner simplices that stand for it: `simplices[K c + i]`
-/// is corner i of cell c (K = 4 corners per quadrilateral, 8 per hexahedron),
-/// with its target `targets[K c + i]` and its weight `weights[K c + i]`.
+/// The kinds of cells.  A cell's kind is told by its number of vertices: in
+/// 2D 4 (quadrilateral); in 3D 4 (tetrahedron), 5 (pyramid), 6 (prism) or 8
+/// (hexahedron).
+enum class Cell_kind { QUADRILATERAL, TETRAHEDRON, PYRAMID, PRISM, HEXAHEDRON };
+
+/// \ingroup PkgMeshUntanglingRef
+/// "quadrilateral", "tetrahedron", "pyramid", "prism" or "hexahedron"
+inline const char* cell_kind_name(Cell_kind kind)
+{
+  switch(kind) {
+    case Cell_kind::QUADRILATERAL: return "quadrilateral";
+    case Cell_kind::TETRAHEDRON: return "tetrahedron";
+    case Cell_kind::PYRAMID: return "pyramid";
+    case Cell_kind::PRISM: return "prism";
+    default: return "hexahedron";
+  }
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// The kind of a cell of dimension `d` with `n` vertices, if any.
+template <int d>
+std::optional<Cell_kind> cell_kind(std::size_t n)
+{
+  if constexpr(d == 2) return n == 4 ? std::optional<Cell_kind>(Cell_kind::QUADRILATERAL) : std::nullopt;
+  switch(n) {
+    case 4: return Cell_kind::TETRAHEDRON;
+    case 5: return Cell_kind::PYRAMID;
+    case 6: return Cell_kind::PRISM;
+    case 8: return Cell_kind::HEXAHEDRON;
+    default: return std::nullopt;
+  }
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// The corner simplices of a cell of `kind`, as `cell_corners()`: row i the
+/// simplex at a vertex of the cell, that vertex first, then its neighbours
+/// along the cell's edges, in the order that makes it positive when the
+/// cell is.  The vertex orders are those of `IO::Mesh_file`:
+/// - a tetrahedron (0 1 2 counter-clockwise seen from 3) is its own corner;
+/// - a prism (0 1 2 counter-clockwise seen from 3 4 5, 3 above 0, Gmsh's
+///   order) has six corners, one per vertex, as a hexahedron has eight;
+/// - a pyramid (base 0 1 2 3 counter-clockwise seen from the apex 4) has
+///   four: the apex has four edges, so no one simplex is its corner.  Row i
+///   is base corner i, (i, i+1, i-1, 4); the four are also the tetrahedra of
+///   the pyramid's two splits along a diagonal of its base.  All four
+///   positive is: the pyramid is valid split either way, and the apex is
+///   above the base seen from every base corner, so that the apex's four
+///   faces turn once around it.  The apex is judged by these four alone.
+template <int d>
+const std::vector<std::array<int, d + 1>>& corners_of(Cell_kind kind)
+{
+  static_assert(d == 2 || d == 3, "cells are 2D or 3D");
+  static constexpr auto cell = cell_corners<d>();   // the quadrilateral's or the hexahedron's
+  static const std::vector<std::array<int, d + 1>> quadrilateral_or_hexahedron(cell.begin(), cell.end());
+  if constexpr(d == 2) {
+    return quadrilateral_or_hexahedron;
+  } else {
+    static const std::vector<std::array<int, 4>> tetrahedron = {{0, 1, 2, 3}};
+    static const std::vector<std::array<int, 4>> pyramid = {{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}};
+    static const std::vector<std::array<int, 4>> prism = {{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5},
+                                                          {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}};
+    switch(kind) {
+      case Cell_kind::TETRAHEDRON: return tetrahedron;
+      case Cell_kind::PYRAMID: return pyramid;
+      case Cell_kind::PRISM: return prism;
+      default: return quadrilateral_or_hexahedron;
+    }
+  }
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// The kind of a cell of dimension `d` that `corners` corner simplices stand
+/// for (`corners_of()`): each kind has its own number of corners.
+template <int d>
+Cell_kind cell_kind_of_corners(std::size_t corners)
+{
+  if constexpr(d == 2) return Cell_kind::QUADRILATERAL;
+  return corners == 1 ? Cell_kind::TETRAHEDRON : corners == 4 ? Cell_kind::PYRAMID
+       : corners == 6 ? Cell_kind::PRISM : Cell_kind::HEXAHEDRON;
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// A cell soup as the corner simplices that stand for it: `simplices[k]` for
+/// k in [`first_corner[c]`, `first_corner[c + 1]`) are the corners of cell c
+/// in the order of `corners_of()` (K c + i for a soup of cells of one kind
+/// with K corners each), with their targets `targets[k]` and weights `weights[k]`.
 template <int d, typename Point>
 struct Corner_simplices
 {
-  static constexpr std::size_t corners_per_cell = d == 2 ? 4 : 8;    ///< K
   std::vector<std::array<std::size_t, d + 1>> simplices;              ///< vertex ids
   std::vector<std::array<Point, d + 1>> targets;                      ///< target simplex of each
-  /// each corner's share of its cell's rest volume: quadrilaterals their area
-  /// (half the sum of the corner triangles' areas, exact for convex
-  /// quadrilaterals), hexahedra 3/4 of the sum of the corner tetrahedra's
-  /// volumes (exact for parallelepipeds), split evenly among the K corners so
-  /// that a cell counts once, whatever the shapes of its corners
+  /// each corner's share of its cell's rest volume, split evenly among the
+  /// cell's corners so that a cell counts once, whatever the shapes of its
+  /// corners.  A cell's volume from its corners' (exact for convex
+  /// quadrilaterals, parallelepipeds, prisms of parallel triangles and
+  /// pyramids of a planar base): a quadrilateral's is half their sum, a
+  /// hexahedron's 3/4, a prism's and a pyramid's 1/2, a tetrahedron's its own
   std::vector<double> weights;
+  std::vector<std::size_t> first_corner;   ///< per cell, then the number of corners
+  std::size_t number_of_cells() const { return first_corner.empty() ? 0 : first_corner.size() - 1; }
 };
 
 namespace internal {
@@ -78,15 +165,70 @@ double corner_volume(const std::array<Point, d + 1>& s)
   }
 }
 
-/// The unit square (d = 2) or unit cube (d = 3), in the cells' vertex order.
+/// The cell of `kind` with every edge of length 1, in its vertex order:
+/// the unit square and cube, the regular tetrahedron, the right prism on the
+/// equilateral triangle, the pyramid on the unit square with equilateral sides.
 template <int d, typename Point>
-std::array<Point, (d == 2 ? 4 : 8)> unit_cell()
+std::vector<Point> unit_cell(Cell_kind kind)
 {
-  if constexpr(d == 2)
+  if constexpr(d == 2) {
     return {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
-  else
-    return {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
-            Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), Point(0, 1, 1)};
+  } else {
+    const double h = std::sqrt(3.) / 2;
+    switch(kind) {
+      case Cell_kind::TETRAHEDRON:
+        return {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, h, 0), Point(0.5, h / 3, std::sqrt(2. / 3))};
+      case Cell_kind::PYRAMID:
+        return {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0.5, 0.5, std::sqrt(0.5))};
+      case Cell_kind::PRISM:
+        return {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, h, 0), Point(0, 0, 1), Point(1, 0, 1), Point(0.5, h, 1)};
+      default:
+        return {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), Point(0, 1, 1)};
+    }
+  }
+}
+
+/// The determinant of the unit vectors along the edges of a corner of the
+/// cell of `kind` with edges of length 1 (unit_cell()), every corner's the
+/// same: 1 for the square and cube, sqrt(3)/2 for the prism, 1/sqrt(2) for
+/// the pyramid and the tetrahedron.  A scaled Jacobian divides by it.
+template <int d>
+double ideal_corner_determinant(Cell_kind kind)
+{
+  struct Coordinates
+  {
+    double x[3];
+    Coordinates(double a, double b, double c = 0) : x{a, b, c} {}
+    double operator[](std::size_t i) const { return x[i]; }
+  };
+  static const std::array<double, 5> of_kind = [] {
+    std::array<double, 5> determinants{};
+    for(Cell_kind k : {Cell_kind::QUADRILATERAL, Cell_kind::TETRAHEDRON, Cell_kind::PYRAMID, Cell_kind::PRISM,
+                       Cell_kind::HEXAHEDRON}) {
+      const auto unit = unit_cell<d, Coordinates>(k);
+      const auto& corner = corners_of<d>(k)[0];
+      double e[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 1}};
+      for(int i = 0; i < d; ++i)
+        for(int c = 0; c < d; ++c)
+          e[i][c] = unit[std::size_t(corner[i + 1])][std::size_t(c)] - unit[std::size_t(corner[0])][std::size_t(c)];
+      determinants[std::size_t(k)] = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                                     e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                                     e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    }
+    return determinants;
+  }();
+  return of_kind[std::size_t(kind)];
+}
+
+/// A cell's volume over the sum of its corners' (see Corner_simplices::weights).
+inline double volume_per_corner_volume(Cell_kind kind)
+{
+  switch(kind) {
+    case Cell_kind::TETRAHEDRON: return 1;
+    case Cell_kind::HEXAHEDRON: return 0.75;
+    default: return 0.5;
+  }
 }
 
 /// The point type of the targets of cells of dimension d whose rest points
@@ -100,25 +242,33 @@ struct Corner_target_point<d, Rest_point, true> { using type = typename Kernel_t
 } // namespace internal
 
 /// \ingroup PkgMeshUntanglingRef
-/// The corner simplices (vertex ids only) of a soup of quadrilaterals
-/// (`d == 2`) or hexahedra (`d == 3`): element K c + i is corner i of cell c
-/// (`cell_corners()`), K = 4 or 8.
-/// \throws std::invalid_argument naming the first cell that has not 4 (resp. 8)
-///         distinct vertex ids below `number_of_points`
+/// The corner simplices (vertex ids only) of a soup of cells of dimension
+/// `d`: quadrilaterals (`d == 2`), or tetrahedra, pyramids, prisms and
+/// hexahedra, mixed or not (`d == 3`), each told by its number of vertices
+/// (`cell_kind()`), its corners in the order of `corners_of()`.  When
+/// `first_corner` is given, it receives the first corner of every cell and
+/// then their number (Corner_simplices::first_corner).
+/// \throws std::invalid_argument naming the first cell of no kind (4
+///         vertices in 2D; 4, 5, 6 or 8 in 3D) or with a vertex id repeated
+///         or not below `number_of_points`
 template <int d, typename CellRange>
-std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRange& cells, std::size_t number_of_points)
+std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRange& cells, std::size_t number_of_points,
+                                                                   std::vector<std::size_t>* first_corner = nullptr)
 {
-  constexpr std::size_t K = d == 2 ? 4 : 8;
-  constexpr auto corners = cell_corners<d>();
   std::vector<std::array<std::size_t, d + 1>> out;
+  if(first_corner) first_corner->clear();
   std::size_t c = 0;
   for(const auto& cell : cells) {
-    const auto name = [c] { return (d == 2 ? "quadrilateral " : "hexahedron ") + std::to_string(c); };
-    const auto size = std::distance(std::begin(cell), std::end(cell));
-    if(size != std::ptrdiff_t(K))
-      throw std::invalid_argument(name() + " has " + std::to_string(size) + " vertices, not " + std::to_string(K));
-    std::array<std::size_t, K> v;
-    for(std::size_t i = 0; i < K; ++i) {
+    const std::size_t size = std::size_t(std::distance(std::begin(cell), std::end(cell)));
+    const std::optional<Cell_kind> kind = cell_kind<d>(size);
+    const auto name = [&] {
+      return std::string(kind ? cell_kind_name(*kind) : d == 2 ? "quadrilateral" : "cell") + " " + std::to_string(c);
+    };
+    if(!kind)
+      throw std::invalid_argument(name() + " has " + std::to_string(size) + " vertices, not " +
+                                  (d == 2 ? "4" : "4 (tetrahedron), 5 (pyramid), 6 (prism) or 8 (hexahedron)"));
+    std::array<std::size_t, 8> v{};
+    for(std::size_t i = 0; i < size; ++i) {
       v[i] = static_cast<std::size_t>(cell[i]);
       if(v[i] >= number_of_points)
         throw std::invalid_argument(name() + " refers to vertex " + std::to_string(v[i]) + ", there are " +
@@ -126,20 +276,24 @@ std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRan
       for(std::size_t j = 0; j < i; ++j)
         if(v[j] == v[i]) throw std::invalid_argument(name() + " repeats vertex " + std::to_string(v[i]));
     }
-    for(std::size_t i = 0; i < K; ++i) {
+    if(first_corner) first_corner->push_back(out.size());
+    for(const auto& corner : corners_of<d>(*kind)) {
       std::array<std::size_t, d + 1> s;
-      for(int j = 0; j <= d; ++j) s[j] = v[corners[i][j]];
+      for(int j = 0; j <= d; ++j) s[j] = v[std::size_t(corner[j])];
       out.push_back(s);
     }
     ++c;
   }
+  if(first_corner) first_corner->push_back(out.size());
   return out;
 }
 
 /// \ingroup PkgMeshUntanglingRef
-/// The corner simplices of a soup of quadrilaterals (`d == 2`) or hexahedra
-/// (`d == 3`), with the rest cells' corners as targets, or the unit square's
-/// or cube's when `rest` is empty, and their weights (`Corner_simplices`).
+/// The corner simplices of a soup of cells (`corner_simplex_indices()`), with
+/// the rest cells' corners as targets, or when `rest` is empty those of the
+/// cell of the same kind with edges of length 1 (the unit square or cube,
+/// the regular tetrahedron, the right equilateral prism, the equilateral
+/// pyramid), and their weights (`Corner_simplices`).
 /// Quadrilaterals may rest on a 3D surface (`Point_3` rest points, the
 /// quad-dominant remeshing case): each corner triangle's target is then its
 /// own 3D corner triangle laid flat, as a triangle of a surface's uv map
@@ -148,7 +302,7 @@ std::vector<std::array<std::size_t, d + 1>> corner_simplex_indices(const CellRan
 /// \tparam d 2 or 3
 /// \tparam Rest_point `Point_2` or `Point_3` (d = 2), `Point_3` (d = 3), constructible from its
 ///         coordinates; the targets are points of the plane's type of its kernel when d = 2, else `Rest_point`
-/// \tparam CellRange a range of cells, each a random access range of 4 or 8 vertex ids
+/// \tparam CellRange a range of cells, each a random access range of vertex ids (4 in 2D; 4, 5, 6 or 8 in 3D)
 ///
 /// \param cells the cells
 /// \param rest the rest position of every vertex, or empty: unit cells
@@ -161,26 +315,27 @@ Corner_simplices<d, typename internal::Corner_target_point<d, Rest_point>::type>
 corner_simplices(const CellRange& cells, const std::vector<Rest_point>& rest, std::size_t number_of_points)
 {
   static_assert(d == 3 ? Ambient_dimension<Rest_point>::value == 3 : Ambient_dimension<Rest_point>::value >= 2,
-                "hexahedra rest in 3D, quadrilaterals in the plane or on a 3D surface");
+                "3D cells rest in 3D, quadrilaterals in the plane or on a 3D surface");
   using Point = typename internal::Corner_target_point<d, Rest_point>::type;
   constexpr bool surface = d == 2 && Ambient_dimension<Rest_point>::value == 3;
-  constexpr std::size_t K = Corner_simplices<d, Point>::corners_per_cell;
-  constexpr auto corners = cell_corners<d>();
   if(!rest.empty() && rest.size() != number_of_points)
     throw std::invalid_argument(std::to_string(rest.size()) + " rest points for " + std::to_string(number_of_points) +
                                 " points");
-  const auto unit = internal::unit_cell<d, Point>();
   Corner_simplices<d, Point> out;
-  out.simplices = corner_simplex_indices<d>(cells, number_of_points);
+  out.simplices = corner_simplex_indices<d>(cells, number_of_points, &out.first_corner);
   out.targets.resize(out.simplices.size());
   out.weights.resize(out.simplices.size());
-  for(std::size_t c = 0; c < out.simplices.size() / K; ++c) {
+  for(std::size_t c = 0; c < out.number_of_cells(); ++c) {
+    const std::size_t first = out.first_corner[c], K = out.first_corner[c + 1] - first;
+    const Cell_kind kind = cell_kind_of_corners<d>(K);
+    const auto& corners = corners_of<d>(kind);
     double volume = 0;
     for(std::size_t i = 0; i < K; ++i) {
-      auto& t = out.targets[K * c + i];
-      const auto& s = out.simplices[K * c + i];
+      auto& t = out.targets[first + i];
+      const auto& s = out.simplices[first + i];
       if(rest.empty()) {
-        for(int j = 0; j <= d; ++j) t[j] = unit[corners[i][j]];
+        const std::vector<Point> unit = internal::unit_cell<d, Point>(kind);
+        for(int j = 0; j <= d; ++j) t[j] = unit[std::size_t(corners[i][j])];
       } else if constexpr(surface) {
         const auto flat = internal::flatten_triangle(rest[s[0]], rest[s[1]], rest[s[2]]);
         for(int j = 0; j < 3; ++j) t[j] = Point(flat[j][0], flat[j][1]);
@@ -189,8 +344,9 @@ corner_simplices(const CellRange& cells, const std::vector<Rest_point>& rest, st
       }
       volume += std::abs(internal::corner_volume<d>(t));
     }
-    const double cell_volume = volume * (d == 2 ? 0.5 : 0.75);
-    std::fill(out.weights.begin() + K * c, out.weights.begin() + K * (c + 1), cell_volume / K);
+    const double cell_volume = volume * (d == 2 ? 0.5 : internal::volume_per_corner_volume(kind));
+    std::fill(out.weights.begin() + std::ptrdiff_t(first), out.weights.begin() + std::ptrdiff_t(first + K),
+              cell_volume / double(K));
   }
   return out;
 }

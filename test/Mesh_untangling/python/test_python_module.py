@@ -217,6 +217,25 @@ class Kinds(unittest.TestCase):
         tangled = mu.check_local_invertibility(mesh.vertices, mesh.elements, rest=rest)
         self.assertGreater(len(tangled.inverted_cells), 0)
 
+    def test_mixed_cells(self):
+        mesh, rest = self.generated("mixedcube", ".vtk")
+        self.assertEqual((mesh.kind, mesh.elements.shape), ("cells", (468, 8)))
+        sizes = np.count_nonzero(mesh.elements >= 0, axis=1)
+        self.assertEqual(sorted(set(sizes)), [4, 5, 6, 8])
+        self.assertTrue(all((row[size:] == -1).all() for row, size in zip(mesh.elements, sizes)))
+        vertices, result = mu.untangle(mesh.vertices, mesh.elements, rest=rest, fixed=mesh.fixed, kind="cells")
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertGreater(result.inverted_before, 0)
+        self.assertEqual(result.number_of_elements, 468)
+        self.assertTrue(np.array_equal(vertices[mesh.fixed], mesh.vertices[mesh.fixed]))
+        tangled = mu.check_local_invertibility(mesh.vertices, mesh.elements, rest=rest, kind="cells")
+        self.assertEqual(len(tangled.inverted_cells), result.inverted_before)
+        path = os.path.join(self.dir.name, "mixed-out.mesh")
+        mu.write(path, vertices, mesh.elements, kind="cells")
+        again = mu.read(path)
+        self.assertEqual(again.kind, "cells")
+        self.assertEqual(sorted(map(tuple, again.elements)), sorted(map(tuple, mesh.elements)))
+
     def test_quadrilaterals(self):
         mesh, rest = self.generated("quadsquare", ".vtk")
         self.assertEqual(mesh.kind, "quadrilaterals")
@@ -479,6 +498,19 @@ class BadInput(unittest.TestCase):
         self.refused(ValueError, "hexahedra need n x 3", self.vertices, np.zeros((1, 8), int) + np.arange(8))
         self.refused(ValueError, "kind='tetrahedra' has 4 vertices per element", self.vertices, self.triangles,
                      kind="tetrahedra")
+
+    def test_mixed_cells(self):
+        cube = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], float)[[0, 1, 3, 2, 4, 5, 7, 6]]
+        cells = np.array([[0, 1, 2, 3, 4, 5, 6, 7], [0, 1, 2, 3, 4, -1, -1, -1]])
+        self.refused(ValueError, "kind='cells' has 8 columns, but elements has 5", cube, cells[:, :5], kind="cells")
+        bad = cells.copy()
+        bad[1] = [0, 1, 2, -1, 4, -1, -1, -1]
+        self.refused(ValueError, "cell 1 has 4 in column 4 after its ids", cube, bad, kind="cells")
+        bad[1] = [0, 1, 2, 3, 4, 5, 6, -1]
+        self.refused(ValueError, r"cell 1 has 7 vertex ids, not 4 \(tetrahedron\), 5 \(pyramid\)", cube, bad, kind="cells")
+        bad[1] = [0, 1, 2, 3, 3, 5, -1, -1]
+        self.refused(ValueError, "elements: prism 1: vertex 3 is repeated", cube, bad, kind="cells")
+        self.refused(ValueError, "cells need n x 3", cube[:, :2], cells, kind="cells")
 
     def test_types(self):
         self.refused(TypeError, "vertices must hold real numbers", np.full((16, 2), "a"), self.triangles)

@@ -44,13 +44,13 @@ struct Untangling_input
   // volume.  Cells give each corner simplex a share of the cell's volume.
   std::vector<double> weights;
 
-  // Quadrilaterals and hexahedra enter as their corner simplices
-  // (Mesh_untangling/corner_simplices.h): with corners_per_cell = K > 1,
-  // mesh elements [K c, K c + K) are the corners of cell c, corner i with the
-  // cell's vertex i first.  Corners overlap, so they are no simplicial
-  // complex: stars are not checked, the verdict is per cell, and phantoms
-  // (built on stars) do not protect them.
-  std::size_t corners_per_cell = 1;
+  // Cells enter as their corner simplices (Mesh_untangling/corner_simplices.h):
+  // mesh elements [cell_first_corner[c], cell_first_corner[c + 1]) are the
+  // corners of cell c, in the order of corners_of() for its kind, which
+  // their number tells.  Empty: the elements are simplices.  Corners
+  // overlap, so they are no simplicial complex: stars are not checked, the
+  // verdict is per cell, and phantoms (built on stars) do not protect them.
+  std::vector<std::size_t> cell_first_corner;
 
   // Seamless parameterizations: the vertices are the surface's wedges, the
   // linked ones images of their representative (Vertex_links.h).  Empty
@@ -81,7 +81,7 @@ struct Untangling_input
 
   std::size_t number_of_mesh_vertices() const { return positions.size() - phantom_vertices; }
   std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
-  bool has_cells() const { return corners_per_cell > 1; }
+  bool has_cells() const { return !cell_first_corner.empty(); }
   bool has_links() const { return !links.empty(); }
 };
 
@@ -250,7 +250,7 @@ bool find_free_boundary_vertex(const Untangling_input<d>& in)
   const std::size_t n = in.number_of_mesh_vertices();
   // (a seam is no boundary: the surface's is that of the representatives' elements)
   const std::vector<char> on_boundary =
-    in.has_cells() ? cell_boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements(), in.corners_per_cell)
+    in.has_cells() ? cell_boundary_vertices<d>(n, in.elements, in.cell_first_corner)
     : in.has_links() ? boundary_vertices<d>(n, elements_of_representatives(in.links, in.elements),
                                             in.number_of_mesh_elements())
                      : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());

@@ -224,7 +224,7 @@ Untangling_input<d> make_cell_input(const PointRange& points, const Corners& cor
     in.targets.push_back(target);
   }
   in.weights = corners.weights;
-  in.corners_per_cell = corners.corners_per_cell;
+  in.cell_first_corner = corners.first_corner;
   return in;
 }
 

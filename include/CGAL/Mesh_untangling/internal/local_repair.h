@@ -78,11 +78,11 @@ void grow_by_one_ring(const Untangling_input<d>& in, std::vector<char>& region)
     for(std::size_t v : in.elements[k])
       if(touched[v]) region[k] = 1;
   // a cell enters whole: its corners are one element of the mesh
-  const std::size_t K = in.corners_per_cell;
-  if(K > 1)
-    for(std::size_t c = 0; c + K <= region.size(); c += K)
-      if(std::find(region.begin() + c, region.begin() + c + K, 1) != region.begin() + c + K)
-        std::fill(region.begin() + c, region.begin() + c + K, 1);
+  const std::vector<std::size_t>& first = in.cell_first_corner;
+  for(std::size_t c = 0; c + 1 < first.size() && first[c + 1] <= region.size(); ++c) {
+    const auto begin = region.begin() + std::ptrdiff_t(first[c]), end = region.begin() + std::ptrdiff_t(first[c + 1]);
+    if(std::find(begin, end, 1) != end) std::fill(begin, end, 1);
+  }
 }
 
 /// The problem on the elements of `region`: its vertices are those of
@@ -112,7 +112,13 @@ Untangling_input<d> region_problem(const Untangling_input<d>& in, const std::vec
     sub.targets.push_back(in.targets[k]);
     if(k < in.weights.size()) sub.weights.push_back(in.weights[k]);
   }
-  sub.corners_per_cell = in.corners_per_cell;   // (grow_by_one_ring() takes whole cells)
+  // (grow_by_one_ring() takes whole cells)
+  for(std::size_t c = 0; c + 1 < in.cell_first_corner.size(); ++c)
+    if(in.cell_first_corner[c] < region.size() && region[in.cell_first_corner[c]]) {
+      if(sub.cell_first_corner.empty()) sub.cell_first_corner.push_back(0);
+      sub.cell_first_corner.push_back(sub.cell_first_corner.back() + in.cell_first_corner[c + 1] -
+                                      in.cell_first_corner[c]);
+    }
   for(std::size_t v : vertex_of) {
     sub.positions.push_back(in.positions[v]);
     sub.is_fixed.push_back(on_cut[v] || (!in.is_fixed.empty() && in.is_fixed[v]));

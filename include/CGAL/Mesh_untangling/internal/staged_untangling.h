@@ -41,7 +41,7 @@ Untangling_problem<d> with_regular_targets(const Untangling_input<d>& in, const 
   regular.is_fixed = in.is_fixed;
   regular.phantom_elements = in.phantom_elements;
   regular.phantom_vertices = in.phantom_vertices;
-  regular.corners_per_cell = in.corners_per_cell;
+  regular.cell_first_corner = in.cell_first_corner;
   regular.links = in.links;
   regular.sliding = in.sliding;   // (else the sliding vertices would be free boundary vertices here)
   for(std::size_t k = 0; k < in.elements.size(); ++k) {

@@ -80,7 +80,7 @@ Invertibility_report check_mesh_elements(const Untangling_input<d>& in, const st
   const Invertibility_report report = check_mesh_part<d>(in, reference_orientation, [](const auto&... arguments) {
     return check_elements<d>(arguments...);
   });
-  return in.has_cells() ? per_cell(report, in.corners_per_cell) : report;
+  return in.has_cells() ? per_cell(report, in.cell_first_corner) : report;
 }
 
 /// The invertibility report on the mesh part of `in`: elements and stars;

@@ -7,6 +7,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_VERTEX_STARS_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_VERTEX_STARS_H
 
+#include <CGAL/Mesh_untangling/corner_simplices.h>
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 
 #include <algorithm>
@@ -123,11 +124,11 @@ std::vector<char> boundary_vertices(std::size_t n, const std::vector<std::array<
   return on_boundary;
 }
 
-/// The facets of a cell in cyclic order: a quadrilateral's edges, a
-/// hexahedron's faces (VTK's vertex order).
+/// A quadrilateral's edges.
 constexpr int quadrilateral_edges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-constexpr int hexahedron_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+/// The vertex id that ends a triangle among the quadrilateral faces of 3D cells.
+constexpr std::size_t no_vertex = std::size_t(-1);
 
 /// The facets that `each_facet(add)` lists (`add(facet)` each, with N
 /// vertices in cyclic order) that are listed once: the boundary facets of
@@ -154,27 +155,65 @@ std::vector<std::array<std::size_t, N>> unshared_facets(const Each_facet& each_f
   return unshared;
 }
 
+/// The faces of a 3D cell of each kind, in its vertex order
+/// (Mesh_untangling::corners_of()), each in cyclic order; a triangle's 4th
+/// entry is -1.
+inline const std::vector<std::array<int, 4>>& cell_faces(Cell_kind kind)
+{
+  static const std::vector<std::array<int, 4>> tetrahedron = {{0, 1, 2, -1}, {0, 1, 3, -1}, {1, 2, 3, -1}, {2, 0, 3, -1}};
+  static const std::vector<std::array<int, 4>> pyramid = {{0, 1, 2, 3}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1},
+                                                          {3, 0, 4, -1}};
+  static const std::vector<std::array<int, 4>> prism = {{0, 1, 2, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {1, 2, 5, 4},
+                                                        {2, 0, 3, 5}};
+  static const std::vector<std::array<int, 4>> hexahedron = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  switch(kind) {
+    case Cell_kind::TETRAHEDRON: return tetrahedron;
+    case Cell_kind::PYRAMID: return pyramid;
+    case Cell_kind::PRISM: return prism;
+    default: return hexahedron;
+  }
+}
+
+/// The vertex i of a cell whose corner simplices (corners_of()) are
+/// `corner[0, K)`: the first vertex of its corner i, but a tetrahedron is
+/// its one corner and a pyramid's apex is the last vertex of every corner.
+template <int d, class Corner>
+std::size_t cell_vertex(const Corner* corner, std::size_t K, int i)
+{
+  if(d == 3 && K == 1) return corner[0][std::size_t(i)];
+  if(d == 3 && K == 4 && i == 4) return corner[0][3];
+  return corner[i][0];
+}
+
 /// The boundary facets of a mesh of cells given by their corner simplices
-/// (Untangling_input::corners_per_cell = K): the cell facets (quadrilateral
-/// edges, hexahedron faces, in cyclic order) that belong to one cell only.
-/// The corners' own facets cannot tell: within one cell each quadrilateral
-/// edge is in two corner triangles, as are its diagonals.  Corner i of a
-/// cell has the cell's vertex i first; hexahedra are in VTK's order.
+/// (Untangling_input::cell_first_corner): the cell facets (quadrilateral
+/// edges; triangles and quadrilaterals of 3D cells, in cyclic order, a
+/// triangle's 4th entry `no_vertex`) that belong to one cell only.  The
+/// corners' own facets cannot tell: within one cell each quadrilateral
+/// edge is in two corner triangles, as are its diagonals.
 template <int d>
 std::vector<std::array<std::size_t, d == 2 ? 2 : 4>>
-cell_boundary_facets(const std::vector<std::array<std::size_t, d + 1>>& elements, std::size_t number_of_elements,
-                     std::size_t corners_per_cell)
+cell_boundary_facets(const std::vector<std::array<std::size_t, d + 1>>& elements,
+                     const std::vector<std::size_t>& first_corner)
 {
   constexpr std::size_t facet_size = d == 2 ? 2 : 4;
-  const std::size_t K = corners_per_cell, cells = std::min(number_of_elements, elements.size()) / K;
+  const std::size_t cells = first_corner.empty() ? 0 : first_corner.size() - 1;
   return unshared_facets<facet_size>([&](const auto& add) {
     for(std::size_t c = 0; c < cells; ++c) {
-      const auto vertex = [&](int i) { return elements[K * c + std::size_t(i)][0]; };
-      for(int f = 0; f < (d == 2 ? 4 : 6); ++f) {
-        std::array<std::size_t, facet_size> facet;
-        for(std::size_t i = 0; i < facet_size; ++i)
-          facet[i] = vertex(d == 2 ? quadrilateral_edges[f][i] : hexahedron_faces[f][i]);
-        add(facet);
+      const std::size_t K = first_corner[c + 1] - first_corner[c];
+      const auto vertex = [&](int i) { return cell_vertex<d>(&elements[first_corner[c]], K, i); };
+      std::array<std::size_t, facet_size> facet;
+      if constexpr(d == 2) {
+        for(const auto& edge : quadrilateral_edges) {
+          for(std::size_t i = 0; i < 2; ++i) facet[i] = vertex(edge[i]);
+          add(facet);
+        }
+      } else {
+        for(const auto& face : cell_faces(cell_kind_of_corners<3>(K))) {
+          for(std::size_t i = 0; i < 4; ++i) facet[i] = face[i] < 0 ? no_vertex : vertex(face[i]);
+          add(facet);
+        }
       }
     }
   });
@@ -183,11 +222,12 @@ cell_boundary_facets(const std::vector<std::array<std::size_t, d + 1>>& elements
 /// The boundary vertices of a mesh of cells (cell_boundary_facets()).
 template <int d>
 std::vector<char> cell_boundary_vertices(std::size_t n, const std::vector<std::array<std::size_t, d + 1>>& elements,
-                                         std::size_t number_of_elements, std::size_t corners_per_cell)
+                                         const std::vector<std::size_t>& first_corner)
 {
   std::vector<char> on_boundary(n, 0);
-  for(const auto& facet : cell_boundary_facets<d>(elements, number_of_elements, corners_per_cell))
-    for(std::size_t v : facet) on_boundary[v] = 1;
+  for(const auto& facet : cell_boundary_facets<d>(elements, first_corner))
+    for(std::size_t v : facet)
+      if(v != no_vertex) on_boundary[v] = 1;
   return on_boundary;
 }
 

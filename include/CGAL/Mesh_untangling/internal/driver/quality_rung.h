@@ -13,6 +13,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_QUALITY_RUNG_H
 
 #include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/corner_simplices.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
@@ -33,11 +34,21 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// For cells: the kind of the cell that mesh element k of `in` is a
+/// corner of, and which of its corners (corners_of()).
+template <int d>
+std::pair<Cell_kind, std::size_t> cell_corner(const Untangling_input<d>& in, std::size_t k)
+{
+  const auto& first = in.cell_first_corner;
+  const std::size_t c = std::size_t(std::upper_bound(first.begin(), first.end(), k) - first.begin()) - 1;
+  return {cell_kind_of_corners<d>(first[c + 1] - first[c]), k - first[c]};
+}
+
 /// The quality of mesh element k of `in`, oriented as `orientation` (+1 or
 /// -1): a corner of a cell its scaled Jacobian (the determinant of the unit
-/// vectors along its d edges, as Mesh_untangling::scaled_jacobian() takes
-/// it per corner), a simplex its mean ratio; 1 at best, not positive for an
-/// inverted or flat element.
+/// vectors along its d edges over that of the ideal cell's corner, as
+/// Mesh_untangling::scaled_jacobian() takes it per corner), a simplex its
+/// mean ratio; 1 at best, not positive for an inverted or flat element.
 template <int d>
 double element_quality(const Untangling_input<d>& in, std::size_t k, int orientation)
 {
@@ -52,7 +63,31 @@ double element_quality(const Untangling_input<d>& in, std::size_t k, int orienta
     if(!(e.norm() > 0)) return 0.;
     unit_edges.col(i) = e / e.norm();
   }
-  return orientation * unit_edges.determinant();
+  const double ideal = ideal_corner_determinant<d>(cell_corner<d>(in, k).first);
+  return (std::min)(1., orientation * unit_edges.determinant() / ideal);
+}
+
+/// The ideal shape of mesh element k of `in`, of unit volume and positive:
+/// a regular simplex, or for the corner of a cell that corner of the cell
+/// of its kind with edges of length 1 (unit_cell()): a cell is best when
+/// each corner is as the ideal's, a square or cube when each is a right one.
+template <int d>
+std::array<Eigen::Matrix<double, d, 1>, d + 1> ideal_shape(const Untangling_input<d>& in, std::size_t k)
+{
+  if(!in.has_cells()) return regular_simplex<d>();
+  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+  s[0].setZero();
+  const auto [kind, corner] = cell_corner<d>(in, k);
+  if(kind == Cell_kind::QUADRILATERAL || kind == Cell_kind::HEXAHEDRON) {
+    for(int i = 0; i < d; ++i) s[i + 1] = Eigen::Matrix<double, d, 1>::Unit(i);   // every corner a right one
+  } else {
+    const auto unit = unit_cell<d, Eigen::Matrix<double, d, 1>>(kind);
+    const auto& ids = corners_of<d>(kind)[corner];
+    for(int i = 1; i <= d; ++i) s[i] = unit[std::size_t(ids[i])] - unit[std::size_t(ids[0])];
+  }
+  const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
+  for(auto& p : s) p *= factor;
+  return s;
 }
 
 /// The shape distortion of mesh element k of `in` against its ideal shape
@@ -69,6 +104,13 @@ double ideal_shape_distortion(const Untangling_input<d>& in, std::size_t k, int 
   }
   Eigen::Matrix<double, d, d> E;
   for(int i = 0; i < d; ++i) E.col(i) = s[i + 1] - s[0];
+  const Cell_kind kind = cell_corner<d>(in, k).first;
+  if(kind != Cell_kind::QUADRILATERAL && kind != Cell_kind::HEXAHEDRON) {   // (a right corner's edges are the identity)
+    const auto ideal = ideal_shape<d>(in, k);
+    Eigen::Matrix<double, d, d> S;
+    for(int i = 0; i < d; ++i) S.col(i) = ideal[i + 1] - ideal[0];
+    E = E * S.inverse();
+  }
   const double det = orientation * E.determinant();
   return det > 0 ? E.squaredNorm() / d / std::pow(det, 2. / d) : std::numeric_limits<double>::infinity();
 }
@@ -81,21 +123,6 @@ double min_quality(const Untangling_input<d>& in, const std::vector<int>& orient
   for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k)
     smallest = (std::min)(smallest, element_quality<d>(in, k, orientation[k]));
   return smallest;
-}
-
-/// The ideal shape of an element, of unit volume and positive: a regular
-/// simplex, or for the corner of a cell the corner of the unit square or
-/// cube (a cell is best when each corner is a right one).
-template <int d>
-std::array<Eigen::Matrix<double, d, 1>, d + 1> ideal_shape(bool cell_corner)
-{
-  if(!cell_corner) return regular_simplex<d>();
-  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
-  s[0].setZero();
-  for(int i = 0; i < d; ++i) s[i + 1] = Eigen::Matrix<double, d, 1>::Unit(i);
-  const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
-  for(auto& p : s) p *= factor;
-  return s;
 }
 
 /// Rounds of the quality rung at most, and how many in a row may fail to
@@ -147,10 +174,9 @@ Untangling_input<d> with_ideal_targets(const Untangling_input<d>& in, const std:
   ideal.positions = in.positions;
   ideal.elements.assign(in.elements.begin(), in.elements.begin() + std::ptrdiff_t(m));
   ideal.is_fixed = in.is_fixed;
-  ideal.corners_per_cell = in.corners_per_cell;
+  ideal.cell_first_corner = in.cell_first_corner;
   ideal.links = in.links;
   ideal.sliding = in.sliding;
-  const auto shape = ideal_shape<d>(in.has_cells());
   ideal.targets.resize(m);
   double total_volume = 0;
   for(std::size_t k = 0; k < m; ++k) {
@@ -159,6 +185,7 @@ Untangling_input<d> with_ideal_targets(const Untangling_input<d>& in, const std:
     const double volume = std::abs(simplex_volume<d>(s));
     total_volume += volume;
     const double size = volume > 0 ? std::pow(volume, 1. / d) : 1.;
+    const auto shape = ideal_shape<d>(in, k);
     for(int i = 0; i <= d; ++i) {
       ideal.targets[k][i] = size * shape[i];
       if(orientation[k] < 0) ideal.targets[k][i][d - 1] = -ideal.targets[k][i][d - 1];

@@ -44,7 +44,7 @@ constexpr int sliding_rounds = 8;
 
 /// The facets of the mesh part of `in` that belong to one element only,
 /// each in cyclic order: a simplex's facets, or for cells a quadrilateral's
-/// edges or a hexahedron's faces (cell_boundary_facets()).
+/// edges or the triangles and quadrilaterals of 3D cells (cell_boundary_facets()).
 template <int d>
 std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>& in)
 {
@@ -54,7 +54,12 @@ std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>&
     for(const auto& f : facets) boundary.emplace_back(f.begin(), f.end());
     return boundary;
   };
-  if(in.has_cells()) return as_vectors(cell_boundary_facets<d>(in.elements, m, in.corners_per_cell));
+  if(in.has_cells()) {
+    std::vector<std::vector<std::size_t>> boundary;
+    for(const auto& f : cell_boundary_facets<d>(in.elements, in.cell_first_corner))
+      boundary.emplace_back(f.begin(), std::find(f.begin(), f.end(), no_vertex));
+    return boundary;
+  }
   return as_vectors(unshared_facets<d>([&](const auto& add) {
     for(std::size_t k = 0; k < m; ++k)
       for(int skip = 0; skip <= d; ++skip) {

@@ -26,9 +26,9 @@ namespace internal {
 template <int d>
 void validate_stars(const Untangling_input<d>& in, const Problem_kind<d>& kind)
 {
-  if(!kind.has_simplex_facets() && in.number_of_mesh_elements() % in.corners_per_cell != 0)
-    throw std::invalid_argument(std::to_string(in.number_of_mesh_elements()) + " corner simplices do not make whole "
-                                "cells of " + std::to_string(in.corners_per_cell));
+  if(in.has_cells() && in.cell_first_corner.back() != in.number_of_mesh_elements())
+    throw std::invalid_argument(std::to_string(in.number_of_mesh_elements()) + " corner simplices for cells of " +
+                                std::to_string(in.cell_first_corner.back()));
   if(kind.has_simplex_facets()) validate_manifold_facets<d>(in);
   std::size_t degenerate = 0;
   const std::vector<int> orientation = target_orientations<d>(in, &degenerate);

@@ -128,19 +128,23 @@ Invertibility_report check_elements(const std::vector<std::array<double, D>>& po
                         elements_with_only_fixed_vertices(simplices, is_fixed));
 }
 
-/// The report on the corner simplices of cells (`corners` of them per cell)
+/// The report on the corner simplices of cells (cell c's from `first_corner[c]` on)
 /// as one on the cells: a cell is inverted when a corner is that a free
 /// vertex can move, else an input defect when a corner with fixed vertices
 /// only is inverted.  Ids are cell ids.
-inline Invertibility_report per_cell(const Invertibility_report& corners_report, std::size_t corners)
+inline Invertibility_report per_cell(const Invertibility_report& corners_report,
+                                     const std::vector<std::size_t>& first_corner)
 {
+  const auto cell_of = [&](std::size_t k) {
+    return std::size_t(std::upper_bound(first_corner.begin(), first_corner.end(), k) - first_corner.begin()) - 1;
+  };
   Invertibility_report cells;
-  cells.number_of_elements = corners_report.number_of_elements / corners;
+  cells.number_of_elements = first_corner.size() - 1;
   for(std::size_t k : corners_report.inverted_element_ids)
-    if(cells.inverted_element_ids.empty() || cells.inverted_element_ids.back() != k / corners)
-      cells.inverted_element_ids.push_back(k / corners);
+    if(cells.inverted_element_ids.empty() || cells.inverted_element_ids.back() != cell_of(k))
+      cells.inverted_element_ids.push_back(cell_of(k));
   for(std::size_t k : corners_report.input_defect_element_ids) {
-    const std::size_t c = k / corners;
+    const std::size_t c = cell_of(k);
     if(!std::binary_search(cells.inverted_element_ids.begin(), cells.inverted_element_ids.end(), c) &&
        (cells.input_defect_element_ids.empty() || cells.input_defect_element_ids.back() != c))
       cells.input_defect_element_ids.push_back(c);
