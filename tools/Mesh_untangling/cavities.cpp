@@ -57,12 +57,8 @@ double signed_volume(const std::vector<std::array<double, 3>>& points, const std
   return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
-/// TetGen's mesh of the PLC of `points` (x, y, z each), its facets
-/// `polygons` (one polygon each) and `holes` (a point inside each, x, y, z
-/// each): radius-edge ratio 1.4, dihedral angles of at least
-/// `min_dihedral_degrees` when positive, volumes at most that of a regular
-/// tetrahedron of edge `edge`; with `keep_the_surface`, no point added on
-/// the facets; every tetrahedron positive, map = rest.
+} // namespace
+
 CGAL::Mesh_untangling::IO::Mesh_file tetrahedralize_with_quality(const std::vector<double>& points,
                                                                  const std::vector<std::vector<int>>& polygons,
                                                                  const std::vector<double>& holes, double edge,
@@ -126,8 +122,6 @@ CGAL::Mesh_untangling::IO::Mesh_file tetrahedralize_with_quality(const std::vect
   m.map = m.rest;
   return m;
 }
-
-} // namespace
 
 CGAL::Mesh_untangling::IO::Mesh_file make_cavities_problem(const Cavities_options& options)
 {

@@ -16,6 +16,8 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 namespace Mesh_untangling_tools {
 
@@ -52,6 +54,21 @@ CGAL::Mesh_untangling::IO::Mesh_file make_cavities_problem(const Cavities_option
 /// std::invalid_argument for a mesh without tetrahedra or a count of 0.
 CGAL::Mesh_untangling::IO::Mesh_file remesh_with_tetgen(const CGAL::Mesh_untangling::IO::Mesh_file& m,
                                                         std::size_t tetrahedra, double min_dihedral_degrees);
+
+/// TetGen's mesh of the PLC of `points` (x, y, z each), its facets
+/// `polygons` (one polygon each) and `holes` (a point inside each, x, y, z
+/// each): radius-edge ratio 1.4, dihedral angles of at least
+/// `min_dihedral_degrees` when positive, volumes at most that of a regular
+/// tetrahedron of edge `edge`; with `keep_the_surface`, no point added on
+/// the facets; every tetrahedron positive, map = rest.
+/// The points are TetGen's output, the input ones first (-Y keeps them
+/// unchanged), then its Steiner points.  Throws std::runtime_error, its
+/// message starting with `who`, when TetGen fails.
+CGAL::Mesh_untangling::IO::Mesh_file tetrahedralize_with_quality(const std::vector<double>& points,
+                                                                 const std::vector<std::vector<int>>& polygons,
+                                                                 const std::vector<double>& holes, double edge,
+                                                                 double min_dihedral_degrees, bool keep_the_surface,
+                                                                 const std::string& who);
 
 } // namespace Mesh_untangling_tools
 
