@@ -8,10 +8,12 @@
 # cell ends positive, the fixed vertices bit for bit in place, the result
 # reads back untangled; the report counts the cells by kind, and names the
 # kind of each inverted cell left when none may move.  --optimize-quality
-# never lowers the worst scaled Jacobian.  Formats without 3D cells and
-# phantoms are refused with the reason.
+# never lowers the worst scaled Jacobian.  Gmsh's extruded plate of
+# hexahedra and prisms reads valid and untangles once tangled.  Formats
+# without 3D cells and phantoms are refused with the reason.
 # usage: test_cli_mixed.sh UNTANGLE_MESH MAKE_TANGLED_MESH
 set -u
+GMSH_DATA=$(cd "$(dirname "${BASH_SOURCE[0]}")/data/gmsh" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/cli_test_harness.sh" test_cli_mixed "$@"
 
 "$MAKE" mixedcube 4 0.8 3 mixed.vtk > make.out 2>&1
@@ -70,6 +72,37 @@ r = json.load(open('quality.json'))
 b, a = r['min_quality_before_optimization'], r['min_quality_after_optimization']
 print('worst scaled Jacobian', b, '->', a)
 sys.exit(0 if r['inverted_after'] == 0 and 0 < b <= a <= 1 else 1)"
+
+# A mesh made by another tool: Gmsh 4.8.4's plate with a hole, extruded
+# (data/gmsh/plate.geo: 700 hexahedra, 635 prisms), valid as read in our
+# vertex orders; its interior moved, its boundary fixed, it untangles.
+# (as its own rest, its boundary fixed: the same mesh, written as legacy .vtk)
+"$UNTANGLE" "$GMSH_DATA/plate-41.msh" --rest "$GMSH_DATA/plate-41.msh" --fix-boundary -o plate.vtk --report plate.json \
+  --threads 1 -q > plate.out 2>&1
+check "Gmsh's plate: read, no inverted cell ($(tail -n 2 plate.out))" json_is plate.json inverted_before 0
+check "Gmsh's plate: its kinds" python3 -c "
+import json, sys
+sys.exit(json.load(open('plate.json'))['cells_by_kind'] != {'hexahedron': 700, 'prism': 635})"
+python3 - << 'PY'
+import math, random
+import legacy_vtk
+lines, i, points = legacy_vtk.read('plate.vtk')
+end = next((k for k, l in enumerate(lines) if l.startswith('POINT_DATA')), len(lines))
+random.seed(5)
+for p in points:
+    on = p[0] in (0, 2) or p[1] in (0, 1) or abs(p[2]) < 1e-12 or abs(p[2] - 0.6) < 1e-12 or \
+         abs(math.hypot(p[0] - 0.7, p[1] - 0.5) - 0.25) < 1e-9
+    if not on:
+        p[0] += random.uniform(-0.08, 0.08)
+        p[1] += random.uniform(-0.08, 0.08)
+        p[2] += random.uniform(-0.03, 0.03)
+open('plate-tangled.vtk', 'w').write('\n'.join(legacy_vtk.with_points(lines, i, points)[:end]) + '\n')
+PY
+"$UNTANGLE" plate-tangled.vtk --rest plate.vtk --fix-boundary -o plate-out.vtk --report plate-out.json --threads 1 -q \
+  > plate-out.out 2>&1
+check "Gmsh's plate tangled: exit 0 ($(tail -n 2 plate-out.out))" test $? -eq 0
+check "Gmsh's plate tangled: inverted cells before" json_positive plate-out.json inverted_before
+check "Gmsh's plate tangled: none after" json_is plate-out.json inverted_after 0
 
 for ext in off obj; do
   msg=$("$UNTANGLE" mixed.vtk -o "x.$ext" 2>&1)
