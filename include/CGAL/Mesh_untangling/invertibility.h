@@ -66,6 +66,53 @@ std::size_t number_of_inverted_elements(const std::vector<std::array<double, D>>
   return std::size_t(std::count_if(signs.begin(), signs.end(), [](signed char s) { return s <= 0; }));
 }
 
+namespace internal {
+
+/// Adds to `report` the windings of the stars of vertices [0, checked) and,
+/// in 3D, of the fans of their edges (a, b), b > a, that `edge_is_checked(a, b)`
+/// accepts.  check_local_invertibility() checks them all; a distributed
+/// check numbers each process's own vertices first, and checks each edge
+/// on one process.
+template <std::size_t D, class Edge_filter>
+void check_stars(const std::vector<std::array<double, D>>& positions,
+                 const std::vector<std::array<std::size_t, D + 1>>& simplices,
+                 const std::vector<int>& reference_orientation, const std::vector<signed char>& signs,
+                 const std::vector<char>& only_fixed, std::size_t checked, const Edge_filter& edge_is_checked,
+                 Invertibility_report& report)
+{
+  const std::size_t n = positions.size();
+  const Vertex_stars stars = build_vertex_stars(n, simplices);
+  const auto scaled = scaled_for_angles(positions, simplices);
+  if constexpr(D == 3)
+    check_vertex_chunks(checked, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+      Defect_recorder record(part, only_fixed);
+      visit_edge_fans_3(scaled, simplices, reference_orientation, signs, stars, first, last,
+        [&](std::size_t a, std::size_t b, Star_type type, double sum, const auto& fan) {
+          if(!edge_is_checked(a, b))
+            return;
+          if(type == Star_type::NON_MANIFOLD)
+            record.non_manifold_edge(a, b);
+          else if(record.is_overwound(type, sum, two_pi))
+            record.edge(a, b, type, fan);
+        });
+    });
+  check_vertex_chunks(checked, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
+    Defect_recorder record(part, only_fixed);
+    auto check_vertex = [&](std::size_t v, Star_type type, double sum, const auto& star) {
+      if(type == Star_type::NON_MANIFOLD)
+        record.non_manifold_vertex(v);
+      else if(record.is_overwound(type, sum, D == 2 ? two_pi : 2 * two_pi))
+        record.vertex(v, type, star);
+    };
+    if constexpr(D == 2)
+      visit_vertex_stars_2(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+    else
+      visit_vertex_stars_3(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
+  });
+}
+
+} // namespace internal
+
 /// \ingroup PkgMeshUntanglingRef
 /// Checks local invertibility of the map given by `positions` on the simplex
 /// soup `simplices` (triangles for `D == 2`, tetrahedra for `D == 3`):
@@ -99,33 +146,8 @@ Invertibility_report check_local_invertibility(const std::vector<std::array<doub
   const auto only_fixed = internal::elements_with_only_fixed_vertices(simplices, is_fixed);
   Invertibility_report report = internal::element_report(signs, only_fixed);
 
-  const std::size_t n = positions.size();
-  const internal::Vertex_stars stars = internal::build_vertex_stars(n, simplices);
-  const auto scaled = internal::scaled_for_angles(positions, simplices);
-  if constexpr(D == 3)
-    internal::check_vertex_chunks(n, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
-      internal::Defect_recorder record(part, only_fixed);
-      internal::visit_edge_fans_3(scaled, simplices, reference_orientation, signs, stars, first, last,
-        [&](std::size_t a, std::size_t b, internal::Star_type type, double sum, const auto& fan) {
-          if(type == internal::Star_type::NON_MANIFOLD)
-            record.non_manifold_edge(a, b);
-          else if(record.is_overwound(type, sum, internal::two_pi))
-            record.edge(a, b, type, fan);
-        });
-    });
-  internal::check_vertex_chunks(n, report, [&](std::size_t first, std::size_t last, Invertibility_report& part) {
-    internal::Defect_recorder record(part, only_fixed);
-    auto check_vertex = [&](std::size_t v, internal::Star_type type, double sum, const auto& star) {
-      if(type == internal::Star_type::NON_MANIFOLD)
-        record.non_manifold_vertex(v);
-      else if(record.is_overwound(type, sum, D == 2 ? internal::two_pi : 2 * internal::two_pi))
-        record.vertex(v, type, star);
-    };
-    if constexpr(D == 2)
-      internal::visit_vertex_stars_2(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
-    else
-      internal::visit_vertex_stars_3(scaled, simplices, reference_orientation, signs, stars, first, last, check_vertex);
-  });
+  internal::check_stars<D>(positions, simplices, reference_orientation, signs, only_fixed, positions.size(),
+                           [](std::size_t, std::size_t) { return true; }, report);
   return report;
 }
 

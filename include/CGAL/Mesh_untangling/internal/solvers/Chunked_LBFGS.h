@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,9 +68,18 @@ void chunked_assign(Eigen::VectorXd& to, const Segment_expression& expression)
 /// is the gradient's, scaled to unit length, and the line search has to find
 /// the scale: on a cube of a million tetrahedra, at its second eps, that
 /// first step was 1.4e6 times too long and took 40 evaluations of 43.
+///
+/// A process may hold only its part of x (the distributed front end: each
+/// rank its own vertices): `sum_over_processes` then adds every process's
+/// part of each dot product, and the iteration, which decides on these sums
+/// alone, runs in step on every process.
 class Chunked_LBFGS
 {
 public:
+  Chunked_LBFGS() = default;
+  explicit Chunked_LBFGS(std::function<double(double)> sum_over_processes)
+    : sum_over_processes_(std::move(sum_over_processes)) {}
+
   template <class Function>
   int minimize(Function& f, Eigen::VectorXd& x, double& fx, const LBFGSpp::LBFGSParam<double>& param)
   {
@@ -77,20 +88,20 @@ public:
     if(S_.rows() != n || S_.cols() != m) forget(n, m);
     Eigen::VectorXd grad(n), xp(n), gradp(n), drt(n);
     fx = f(x, grad);
-    double gnorm = std::sqrt(chunked_dot(grad, grad));
+    double gnorm = std::sqrt(dot(grad, grad));
     if(gnorm <= param.epsilon) return 1;
     double step = 1;
     if(corrections_ > 0) apply_inverse_hessian(grad, drt);
-    if(corrections_ == 0 || !(chunked_dot(grad, drt) < 0)) {   // (no pairs yet, or they point uphill here)
+    if(corrections_ == 0 || !(dot(grad, drt) < 0)) {   // (no pairs yet, or they point uphill here)
       forget(n, m);
       chunked_assign(drt, [&](Eigen::Index i, Eigen::Index l) { return -grad.segment(i, l); });
-      step = 1 / std::sqrt(chunked_dot(drt, drt));
+      step = 1 / std::sqrt(dot(drt, drt));
     }
     for(int k = 1;; ++k) {
       parallel_copy(x.data(), n, xp.data());
       parallel_copy(grad.data(), n, gradp.data());
       line_search(f, fx, x, grad, step, drt, xp, param);
-      gnorm = std::sqrt(chunked_dot(grad, grad));
+      gnorm = std::sqrt(dot(grad, grad));
       if(gnorm <= param.epsilon) return k;
       if(param.max_iterations != 0 && k >= param.max_iterations) return k;
       add_correction(x, xp, grad, gradp);
@@ -112,12 +123,11 @@ private:
   /// the start, it throws, which ends the inner solve (LBFGS_solver keeps
   /// the best point seen).
   template <class Function>
-  static void line_search(Function& f, double& fx, Eigen::VectorXd& x, Eigen::VectorXd& grad, double& step,
-                          const Eigen::VectorXd& drt, const Eigen::VectorXd& xp,
-                          const LBFGSpp::LBFGSParam<double>& param)
+  void line_search(Function& f, double& fx, Eigen::VectorXd& x, Eigen::VectorXd& grad, double& step,
+                   const Eigen::VectorXd& drt, const Eigen::VectorXd& xp, const LBFGSpp::LBFGSParam<double>& param) const
   {
     constexpr double zoom_margin = 0.1, expansion = 2;
-    const double fx_init = fx, dg_init = chunked_dot(grad, drt);
+    const double fx_init = fx, dg_init = dot(grad, drt);
     if(!(dg_init < 0)) throw std::logic_error("the direction does not descend");
     const double test_decrease = param.ftol * dg_init, test_curvature = -param.wolfe * dg_init;
     double step_lo = 0, fx_lo = fx_init, dg_lo = dg_init, step_hi = 0, fx_hi = 0;
@@ -142,7 +152,7 @@ private:
       }
       move(x, xp, step, drt);
       fx = f(x, grad);
-      const double dg = chunked_dot(grad, drt);
+      const double dg = dot(grad, drt);
       if(fx - fx_init > step * test_decrease || (bracketed ? fx >= fx_lo : (step_lo > 0 && fx >= fx_lo))) {
         step_hi = step;   // too far: the minimum lies between lo and here
         fx_hi = fx;
@@ -190,8 +200,8 @@ private:
       S_.col(at).segment(i, l) = x.segment(i, l) - xp.segment(i, l);
       Y_.col(at).segment(i, l) = g.segment(i, l) - gp.segment(i, l);
     });
-    ys_[at] = chunked_dot(S_.col(at), Y_.col(at));
-    theta_ = chunked_dot(Y_.col(at), Y_.col(at)) / ys_[at];
+    ys_[at] = dot(S_.col(at), Y_.col(at));
+    theta_ = dot(Y_.col(at), Y_.col(at)) / ys_[at];
     corrections_ = std::min(corrections_ + 1, m);
     pointer_ = at + 1;
   }
@@ -204,18 +214,27 @@ private:
     int j = pointer_ % m;
     for(int c = 0; c < corrections_; ++c) {
       j = (j + m - 1) % m;
-      alpha_[j] = chunked_dot(S_.col(j), direction) / ys_[j];
+      alpha_[j] = dot(S_.col(j), direction) / ys_[j];
       const double a = alpha_[j];
       chunked_assign(direction, [&](Eigen::Index i, Eigen::Index l) { return direction.segment(i, l) - a * Y_.col(j).segment(i, l); });
     }
     chunked_assign(direction, [&](Eigen::Index i, Eigen::Index l) { return direction.segment(i, l) / theta_; });
     for(int c = 0; c < corrections_; ++c) {
-      const double beta = chunked_dot(Y_.col(j), direction) / ys_[j], a = alpha_[j] - beta;
+      const double beta = dot(Y_.col(j), direction) / ys_[j], a = alpha_[j] - beta;
       chunked_assign(direction, [&](Eigen::Index i, Eigen::Index l) { return direction.segment(i, l) + a * S_.col(j).segment(i, l); });
       j = (j + 1) % m;
     }
   }
 
+  /// x . y over the whole of x (every process's part).
+  template <class X, class Y>
+  double dot(const Eigen::MatrixBase<X>& x, const Eigen::MatrixBase<Y>& y) const
+  {
+    const double part = chunked_dot(x, y);
+    return sum_over_processes_ ? sum_over_processes_(part) : part;
+  }
+
+  std::function<double(double)> sum_over_processes_;
   Eigen::MatrixXd S_, Y_;
   std::vector<double> ys_, alpha_;
   int pointer_ = 0, corrections_ = 0;

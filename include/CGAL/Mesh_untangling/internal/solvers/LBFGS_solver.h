@@ -49,15 +49,55 @@ constexpr int published_inner_iterations() { return d == 2 ? 30000 : 3000; }
 /// (F_pub = 10^d V F, V the total target volume in unit-box units), so
 /// g_pub = 10^(d-1) V g.  ||x_pub|| is taken at the start of the inner solve
 /// (it moves little during one) so that LBFGSpp's absolute test applies it.
+/// A distributed run adds the two sums it is made of over the processes
+/// (total_target_volume() over each one's elements, published_squared_norm() over
+/// its vertices) before the last step.
 template <int d>
-double published_gradient_threshold(const Untangling_problem<d>& P)
+double published_gradient_threshold(double target_volume, double published_squared_norm)
+{
+  return 1e-4 * std::max(1., std::sqrt(published_squared_norm)) / (std::pow(10., d - 1) * target_volume);
+}
+
+/// The total target volume of P's elements, in unit-box units.
+template <int d>
+double total_target_volume(const Untangling_problem<d>& P)
 {
   double volume = 0;
   for(const auto& G : P.gradient_operators)
     volume += 1 / std::abs(G.template bottomRows<d>().determinant()) / (d == 2 ? 2. : 6.);
-  double x_norm2 = 0;
-  for(double c : P.x) x_norm2 += (10 * c + 5) * (10 * c + 5);
-  return 1e-4 * std::max(1., std::sqrt(x_norm2)) / (std::pow(10., d - 1) * volume);
+  return volume;
+}
+
+/// ||x_pub||^2 for the `size` coordinates x.
+inline double published_squared_norm(const double* x, std::size_t size)
+{
+  double norm2 = 0;
+  for(std::size_t i = 0; i < size; ++i) norm2 += (10 * x[i] + 5) * (10 * x[i] + 5);
+  return norm2;
+}
+
+template <int d>
+double published_gradient_threshold(const Untangling_problem<d>& P)
+{
+  return published_gradient_threshold<d>(total_target_volume(P), published_squared_norm(P.x.data(), P.x.size()));
+}
+
+/// The settings of the published code's inner solve: 10 curvature pairs,
+/// a strong-Wolfe line search of at most 40 evaluations, and no test but
+/// its gradient threshold (none on the energy decrease: the published code
+/// has none).
+inline LBFGSpp::LBFGSParam<double> published_lbfgs_parameters(double gradient_threshold, int max_iterations)
+{
+  LBFGSpp::LBFGSParam<double> param;
+  param.m = 10;
+  param.epsilon = gradient_threshold;
+  param.epsilon_rel = 0;
+  param.past = 0;
+  param.max_iterations = max_iterations;
+  param.max_linesearch = 40;
+  param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
+  param.check_param();
+  return param;
 }
 
 /// Who does L-BFGS's vector algebra: LBFGSpp (the reference, serial), or
@@ -111,15 +151,7 @@ public:
       if(value < best_value) { best_value = value; parallel_copy(at, x.size(), best.data()); }
       return value;
     };
-    LBFGSpp::LBFGSParam<double> param;
-    param.m = 10;
-    param.epsilon = published_gradient_threshold(P);
-    param.epsilon_rel = 0;     // the published test only (above)
-    param.past = 0;            // no test on the energy decrease: the published code has none
-    param.max_iterations = max_iterations;
-    param.max_linesearch = 40;
-    param.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
-    param.check_param();
+    const LBFGSpp::LBFGSParam<double> param = published_lbfgs_parameters(published_gradient_threshold(P), max_iterations);
     Eigen::VectorXd x = best;
     double fx = 0;
     try {
