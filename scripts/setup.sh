@@ -3,7 +3,7 @@
 # the project in build/ (Release).  Idempotent: quiet about packages unless
 # one is missing; a second run only rebuilds what changed.
 #
-# usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python]
+# usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python] [--mpi]
 #   --sanitize  build in build-asan/ instead: Debug, AddressSanitizer and
 #               UndefinedBehaviorSanitizer (-DMESH_UNTANGLING_SANITIZE=ON)
 #   --doc       also install doxygen, bibtex and MathJax, and build the
@@ -13,6 +13,9 @@
 #               the tests, fuzzers and benchmarks take about 30)
 #   --python    with --sample: also build the Python module mesh_untangling
 #               (BUILD/python; the full build always builds it)
+#   --mpi       also install PETSc and Open MPI and build the distributed
+#               untangling (untangle_mesh_mpi, ctest test_cli_mpi); a build
+#               finds them by itself once they are installed
 # Environment: JOBS (parallel build jobs, default 2).
 set -euo pipefail
 trap 'echo "setup.sh: FAILED (line $LINENO: $BASH_COMMAND)" >&2' ERR
@@ -23,6 +26,7 @@ CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release)
 WITH_DOC=0
 SAMPLE=0
 WITH_PYTHON=0
+WITH_MPI=0
 for arg in "$@"; do
   case $arg in
     --sanitize)
@@ -34,11 +38,13 @@ for arg in "$@"; do
       SAMPLE=1 ;;
     --python)
       WITH_PYTHON=1 ;;
+    --mpi)
+      WITH_MPI=1 ;;
     -h|--help)
-      sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *)
-      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python])" >&2
+      echo "setup.sh: unknown argument '$arg' (usage: scripts/setup.sh [--sanitize] [--doc] [--sample] [--python] [--mpi])" >&2
       exit 2 ;;
   esac
 done
@@ -77,6 +83,13 @@ fi
 # The manual (--doc only): doxygen; texlive-binaries for bibtex, which
 # formats the references (doc/Mesh_untangling/references.bib); libjs-mathjax
 # so that the formulas display without network access.
+# The distributed untangling (--mpi only): PETSc (PT-Scotch partitions, star
+# forests for the ghosts; Debian's petsc-dev, 3.18, pulls Open MPI in) and
+# the mpiexec that runs it (openmpi-bin).
+if [ "$WITH_MPI" = 1 ]; then
+  PACKAGES+=(petsc-dev libopenmpi-dev openmpi-bin)
+  CMAKE_ARGS+=(-DMESH_UNTANGLING_WITH_MPI=ON)
+fi
 if [ "$WITH_DOC" = 1 ]; then
   PACKAGES+=(doxygen texlive-binaries libjs-mathjax)
 fi

@@ -38,6 +38,7 @@ enum mesh_untangling_feature_angle_t { mesh_untangling_feature_angle };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
+enum mesh_untangling_verdict_output_t { mesh_untangling_verdict_output };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -286,6 +287,11 @@ CGAL_MESH_UNTANGLING_PARAMETER(refinement_budget, mesh_untangling_refinement_bud
 /// per vertex the refinement added, in the order of the splits (none
 /// when the refinement did not run or did not succeed).
 CGAL_MESH_UNTANGLING_PARAMETER(added_vertices_output, mesh_untangling_added_vertices_output_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// An output iterator receiving the `CGAL::Mesh_untangling::Invertibility_report`
+/// of the result, its lists of ids included (`CGAL::untangle_simplex_soup_distributed()`:
+/// on process 0; the other processes receive the counts without the lists).
+CGAL_MESH_UNTANGLING_PARAMETER(verdict_output, mesh_untangling_verdict_output_t)
 
 #undef CGAL_MESH_UNTANGLING_PARAMETER
 

@@ -1,0 +1,159 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+/// \file untangle_mesh_distributed.h
+/// Untangling over the processes of an MPI communicator (needs MPI and
+/// PETSc: the build option MESH_UNTANGLING_WITH_MPI).
+#ifndef CGAL_UNTANGLE_MESH_DISTRIBUTED_H
+#define CGAL_UNTANGLE_MESH_DISTRIBUTED_H
+
+#include <CGAL/Mesh_untangling/Invertibility_report.h>
+#include <CGAL/Mesh_untangling/Untangling_result.h>
+#include <CGAL/Mesh_untangling/distributed/untangle_distributed.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_options.h>
+#include <CGAL/Mesh_untangling/internal/front_ends.h>
+#include <CGAL/Mesh_untangling/parameters.h>
+
+#include <CGAL/Dimension.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <mpi.h>
+
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgMeshUntanglingRef
+/// Untangles a simplex soup over the processes of `comm`, by the published
+/// scheme that `untangle_simplex_soup()` runs with `Solver::LBFGS`: the soup
+/// given on process 0 is split there into parts of nearly equal size
+/// (PT-Scotch through PETSc's `MatPartitioning`, on the elements' dual
+/// graph, phantoms included), each process minimizes over its own points
+/// (the eps schedule and the L-BFGS iteration of the serial solver, every
+/// decision taken on sums and minima over all processes, so that all take
+/// the same steps), and the exact verdict of
+/// `Mesh_untangling::check_local_invertibility()` is computed part by part:
+/// each process judges its own elements, the stars of its own points and
+/// the fans of the edges it is given, with the elements around its points
+/// that other processes own.  Its counts are those of a serial check of
+/// the same map.
+///
+/// A free boundary is protected by the phantom elements the serial entry
+/// points build (built on process 0, then split with the elements they
+/// touch).  What the serial driver adds to the published scheme does not
+/// run distributed: the Newton solver, the fallbacks (regular targets, the
+/// continuation, the local repair, the refinement), the quality rung and
+/// the sliding boundary.
+///
+/// Must be called by every process of `comm`, which must have initialized
+/// PETSc (`PetscInitialize()`, which initializes MPI).  Process 0 needs the
+/// memory of the whole problem while it builds and splits it (about as
+/// much as a serial run's set-up); the others hold their part only.
+///
+/// \tparam PointRange a random access range of `Point_2` or `Point_3` (its size is read on process 0 only)
+/// \tparam SimplexRange a range of simplices, each a random access range of 3 or 4 point indices
+///
+/// \param comm the processes
+/// \param points on process 0, the map; receives the result; elsewhere not used
+/// \param simplices on process 0, the elements; elsewhere not used
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{the fixed points: never written}
+///     \cgalParamType{a readable property map `std::size_t` -> `bool`}
+///     \cgalParamDefault{no point is fixed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::phantom_protection}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::rest_points}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations, maximum_running_time, Mesh_untangling::parameters::theta}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`; the clock of process 0 decides}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called on process 0 after each eps step; returning `false` stops the run on every process}
+///     \cgalParamType{`std::function<bool(const Mesh_untangling::Untangling_step&)>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::verdict_output}
+///     \cgalParamDescription{receives the `Mesh_untangling::Invertibility_report` of the result (its id lists on process 0 only)}
+///     \cgalParamType{an output iterator accepting `Mesh_untangling::Invertibility_report`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the same figures on every process; `solver` names the number of processes
+template <typename PointRange, typename SimplexRange, typename NamedParameters = parameters::Default_named_parameters>
+Mesh_untangling::Untangling_result
+untangle_simplex_soup_distributed(MPI_Comm comm, PointRange& points, const SimplexRange& simplices,
+                                  const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
+  constexpr int d = Ambient_dimension<Point>::value;
+  namespace MU = Mesh_untangling::internal;
+  namespace MD = Mesh_untangling::distributed::internal;
+  const auto fixed = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                      Static_boolean_property_map<std::size_t, false>());
+  const auto rest = get_parameter(np, internal_np::mesh_untangling_rest_points);
+  MD::Loop_settings settings;
+  settings.theta = choose_parameter(get_parameter(np, internal_np::mesh_untangling_theta),
+                                    Mesh_untangling::default_theta(d));
+  settings.max_outer_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations),
+                                                   Mesh_untangling::default_number_of_iterations);
+  settings.max_seconds = choose_parameter(get_parameter(np, internal_np::maximum_running_time),
+                                          std::numeric_limits<double>::infinity());
+  settings.callback = choose_parameter(get_parameter(np, internal_np::callback),
+                                       std::function<bool(const Mesh_untangling::Untangling_step&)>());
+  MU::Protection_request<d> protection;
+  protection.enabled = choose_parameter(get_parameter(np, internal_np::mesh_untangling_phantom_protection), true);
+  auto verdict_out = choose_parameter(get_parameter(np, internal_np::mesh_untangling_verdict_output),
+                                      Emptyset_iterator());
+
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  Mesh_untangling::Invertibility_report verdict;
+  Mesh_untangling::Untangling_result result;
+  if(const std::string refused = MU::theta_refusal(settings.theta); !refused.empty()) {
+    result.message = refused;
+    return result;
+  }
+  std::vector<double> positions;   // (process 0: d per point, the result)
+  MU::Untangling_input<d> input;
+  std::string refusal;              // (process 0's)
+  if(rank == 0) {
+    if constexpr(MU::is_given<std::decay_t<decltype(rest)>>())
+      if(std::size_t(rest.size()) != std::size_t(points.size()))
+        refusal = std::to_string(rest.size()) + " rest points for " + std::to_string(points.size()) + " points";
+    if(refusal.empty()) input = MU::make_soup_input<d>(points, simplices, fixed, rest, false);
+    for(const auto& p : input.positions) positions.insert(positions.end(), p.data(), p.data() + d);
+  }
+  result = MD::untangle_distributed<d>(comm, rank == 0 ? &input : nullptr, refusal, protection, settings,
+                                       rank == 0 ? &positions : nullptr, verdict);
+  if(rank == 0 && result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
+    std::size_t v = 0;
+    for(auto& p : points) {
+      if(!input.is_fixed[v]) {
+        if constexpr(d == 2) p = Point(positions[2 * v], positions[2 * v + 1]);
+        else p = Point(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+      }
+      ++v;
+    }
+  }
+  *verdict_out++ = verdict;
+  return result;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_UNTANGLE_MESH_DISTRIBUTED_H
