@@ -103,17 +103,12 @@ double peak_memory()
 /// Every process's peak memory, on process 0.
 std::vector<double> peak_memory_per_process(MPI_Comm comm)
 {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const double mine = peak_memory();
-  std::vector<double> all(rank == 0 ? size : 0);
-  MPI_Gather(&mine, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, comm);
-  return all;
+  return MU::distributed::internal::gather_on_process_0(std::vector<double>{peak_memory()}, comm);
 }
 
 template <int d>
-MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibility_report& verdict, MPI_Comm comm)
+MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibility_report& verdict,
+                               double& solve_seconds, MPI_Comm comm)
 {
   using Point = std::conditional_t<d == 2, Kernel::Point_2, Kernel::Point_3>;
   const auto point = [](const std::array<double, 3>& c) {
@@ -134,6 +129,7 @@ MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibil
     fixed = p->fixed;
   }
   const auto progress = [&](const MU::Untangling_step& s) {
+    solve_seconds = s.seconds;
     if(!args.quiet)
       std::cerr << "eps step " << s.step << ": " << s.non_positive << " non-positive, min det J " << s.min_det
                 << ", eps " << s.epsilon << ", " << s.seconds << " s\n";
@@ -157,7 +153,8 @@ MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibil
 }
 
 void write_report(const std::string& path, const Arguments& args, const Problem& p, int processes,
-                  const MU::Untangling_result& r, const MU::Invertibility_report& v, const std::vector<double>& memory)
+                  const MU::Untangling_result& r, const MU::Invertibility_report& v, double solve_seconds,
+                  const std::vector<double>& memory)
 {
   nlohmann::ordered_json j;
   j["input"] = args.input;
@@ -198,6 +195,7 @@ void write_report(const std::string& path, const Arguments& args, const Problem&
   j["inner_iterations"] = r.inner_iterations;
   j["energy_evaluations"] = r.energy_evaluations;
   j["seconds"] = r.seconds;
+  j["eps_loop_seconds"] = solve_seconds;   // (the rest: process 0's set-up and split, the verdict, the gathering)
   j["peak_memory_bytes_per_process"] = memory;
   IO::internal::Atomic_output_file file(path);
   file.stream() << j.dump(2) << "\n";
@@ -238,8 +236,9 @@ int run(const Arguments& args, MPI_Comm comm)
   MPI_Bcast(&dimension, 1, MPI_INT, 0, comm);
   MU::Invertibility_report verdict;
   Problem* p = rank == 0 ? &problem : nullptr;
-  const MU::Untangling_result r =
-    dimension == 2 ? untangle<2>(p, args, verdict, comm) : untangle<3>(p, args, verdict, comm);
+  double solve_seconds = 0;   // (at the end of the last eps step, on process 0)
+  const MU::Untangling_result r = dimension == 2 ? untangle<2>(p, args, verdict, solve_seconds, comm)
+                                                 : untangle<3>(p, args, verdict, solve_seconds, comm);
   if(r.status == MU::Untangling_status::INVALID_INPUT) {
     if(rank == 0) std::cerr << "untangle_mesh_mpi: error: " << args.input << ": " << r.message << "\n";
     return 2;
@@ -247,7 +246,7 @@ int run(const Arguments& args, MPI_Comm comm)
   const std::vector<double> memory = peak_memory_per_process(comm);
   if(!succeeds_on_process_0(rank, comm, [&] {
        IO::write_mesh_file(args.output, problem.mesh);
-       if(!args.report.empty()) write_report(args.report, args, problem, size, r, verdict, memory);
+       if(!args.report.empty()) write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
      }))
     return 2;
   if(rank == 0)

@@ -32,13 +32,14 @@ namespace CGAL {
 
 /// \ingroup PkgMeshUntanglingRef
 /// Untangles a simplex soup over the processes of `comm`, by the published
-/// scheme that `untangle_simplex_soup()` runs with `Solver::LBFGS`: the soup
-/// given on process 0 is split there into parts of nearly equal size
-/// (PT-Scotch through PETSc's `MatPartitioning`, on the elements' dual
-/// graph, phantoms included), each process minimizes over its own points
-/// (the eps schedule and the L-BFGS iteration of the serial solver, every
-/// decision taken on sums and minima over all processes, so that all take
-/// the same steps), and the exact verdict of
+/// scheme (the eps schedule of the paper, L-BFGS inner solves) as the
+/// serial default runs it when it hands over to L-BFGS (`Solver::AUTOMATIC`
+/// on large meshes: the curvature pairs carried from one eps step to the
+/// next): the soup given on process 0 is split there into parts of nearly
+/// equal size (PT-Scotch through PETSc's `MatPartitioning`, on the elements'
+/// dual graph, phantoms included), each process minimizes over its own
+/// points, every decision taken on sums and minima over all processes (so
+/// that all take the same steps), and the exact verdict of
 /// `Mesh_untangling::check_local_invertibility()` is computed part by part:
 /// each process judges its own elements, the stars of its own points and
 /// the fans of the edges it is given, with the elements around its points

@@ -175,6 +175,24 @@ inline std::vector<char> receive_bytes(int from, MPI_Comm comm)
   return bytes;
 }
 
+/// Every process's `mine`, in process order, on process 0 (elsewhere, nothing).
+/// (Byte counts are ints: at most 2 GiB in all.)
+template <class T>
+std::vector<T> gather_on_process_0(const std::vector<T>& mine, MPI_Comm comm)
+{
+  static_assert(std::is_trivially_copyable_v<T>);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const int bytes = int(mine.size() * sizeof(T));
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for(int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<T> all(rank == 0 ? std::size_t(offsets[size]) / sizeof(T) : 0);
+  MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0, comm);
+  return all;
+}
+
 } // namespace internal
 } // namespace distributed
 } // namespace Mesh_untangling

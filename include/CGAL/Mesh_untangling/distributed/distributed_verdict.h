@@ -49,19 +49,11 @@ Invertibility_report own_element_report(const Rank_part<d>& part, const std::vec
   return report;
 }
 
+/// The processes' lists, one sorted list on process 0 (elsewhere, empty).
 template <class T>
 void gather_list(std::vector<T>& list, MPI_Comm comm)
 {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const int words = int(sizeof(T) / sizeof(std::size_t));
-  const int mine = int(list.size()) * words;
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for(int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<T> all(rank == 0 ? std::size_t(offsets[size] / words) : 0);
-  MPI_Gatherv(list.data(), mine, MPI_UNSIGNED_LONG, all.data(), counts.data(), offsets.data(), MPI_UNSIGNED_LONG, 0, comm);
+  std::vector<T> all = gather_on_process_0(list, comm);
   std::sort(all.begin(), all.end());
   list.swap(all);
 }

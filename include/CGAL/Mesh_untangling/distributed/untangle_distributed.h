@@ -20,6 +20,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -96,31 +97,23 @@ std::vector<double> user_positions(const Rank_part<d>& part, const std::vector<d
   return position;
 }
 
-/// The own free mesh vertices' positions, gathered on process 0 into `all` (d per vertex, global ids).
+/// The own free mesh vertices' positions, gathered on process 0 into `all`
+/// (d per vertex, global ids; null elsewhere).
 template <int d>
 void gather_free_positions(const Rank_part<d>& part, const std::vector<double>& position, std::vector<double>* all,
                            MPI_Comm comm)
 {
-  std::vector<double> mine;   // global id, then d coordinates (ids below 2^53: exact as doubles)
+  struct Moved { std::size_t vertex; std::array<double, d> position; };
+  std::vector<Moved> mine;
   for(std::size_t v = 0; v < part.own_mesh_vertices; ++v)
     if(!part.is_fixed[v]) {
-      mine.push_back(double(part.global_vertex[v]));
-      mine.insert(mine.end(), position.begin() + d * v, position.begin() + d * (v + 1));
+      Moved m{part.global_vertex[v], {}};
+      std::copy(position.begin() + d * v, position.begin() + d * (v + 1), m.position.begin());
+      mine.push_back(m);
     }
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const int count = int(mine.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for(int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> received(rank == 0 ? std::size_t(offsets[size]) : 0);
-  MPI_Gatherv(mine.data(), count, MPI_DOUBLE, received.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm);
-  if(rank != 0) return;
-  for(std::size_t i = 0; i < received.size(); i += d + 1) {
-    const std::size_t v = std::size_t(received[i]);
-    std::copy(received.begin() + i + 1, received.begin() + i + 1 + d, all->begin() + d * v);
-  }
+  const std::vector<Moved> received = gather_on_process_0(mine, comm);
+  if(all == nullptr) return;
+  for(const Moved& m : received) std::copy(m.position.begin(), m.position.end(), all->begin() + d * m.vertex);
 }
 
 /// Untangles the problem of `in` (process 0's, phantoms appended to it as
@@ -167,8 +160,7 @@ Untangling_result untangle_distributed(MPI_Comm comm, MU::Untangling_input<d>* i
   const Loop_outcome out = loop.run();
   const std::vector<double> position = user_positions(part, loop.x(), setup);
   verdict = check_distributed_map(part, position, comm);
-  if(rank == 0) gather_free_positions(part, position, positions, comm);
-  else gather_free_positions<d>(part, position, nullptr, comm);
+  gather_free_positions(part, position, rank == 0 ? positions : nullptr, comm);
 
   MU::record_verdict(verdict, result);
   result.status = MU::final_status(verdict, out.numerical_failure, out.stopped && !out.out_of_time, out.out_of_time);
