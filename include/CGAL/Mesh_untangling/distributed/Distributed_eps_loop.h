@@ -66,6 +66,7 @@ public:
   {
     MPI_Comm_rank(comm_, &rank_);
     unknowns_ = d * part_.own_vertices;
+    target_volume_ = sum(MU::total_target_volume(P_));   // (the targets do not move: once per run)
   }
 
   /// Runs the eps loop from the part's x; `x()` then holds the result
@@ -203,10 +204,9 @@ private:
       if(value < best_value) { best_value = value; best = at; }
       return value;
     };
-    const double volume = sum(MU::total_target_volume(P_));
     const double norm2 = sum(MU::published_squared_norm(P_.x.data(), unknowns_));
     const LBFGSpp::LBFGSParam<double> param = MU::published_lbfgs_parameters(
-      MU::published_gradient_threshold<d>(volume, norm2), MU::published_inner_iterations<d>());
+      MU::published_gradient_threshold<d>(target_volume_, norm2), MU::published_inner_iterations<d>());
     double fx = 0;
     try {
       stats.iterations = std::size_t(curvature.minimize(F, x, fx, param));
@@ -229,6 +229,7 @@ private:
   std::chrono::steady_clock::time_point start_;
   int rank_ = 0;
   std::size_t unknowns_ = 0;
+  double target_volume_ = 0;
   mutable std::size_t total_elements_ = 0;
   bool time_is_up_ = false;
   std::vector<double> local_gradient_;
