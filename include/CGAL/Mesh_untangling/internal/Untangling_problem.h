@@ -14,6 +14,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -122,6 +124,19 @@ colour_elements(const std::vector<std::array<std::size_t, vertices_per_element>>
   return {colour, colours};
 }
 
+/// Where the problem's sums and extremes over elements and vertices are
+/// completed.  A whole problem needs nothing more; one process's part of a
+/// distributed problem (distributed/) has every such value replaced, in
+/// place, by its sum or maximum over all processes, so that each part is
+/// normalized, scaled and weighted as the whole problem would be.
+struct Problem_reductions
+{
+  std::function<void(double*, int)> sum, max;   // empty: the values are whole already
+
+  void add_up(double* values, int count) const { if(sum) sum(values, count); }
+  void take_max(double* values, int count) const { if(max) max(values, count); }
+};
+
 /// Flat arrays the solvers work on.  Coordinates are normalized (centred,
 /// unit bounding box) so that tolerances are scale free; elements whose
 /// target is negatively oriented have two vertices swapped so that every
@@ -181,20 +196,25 @@ struct Untangling_problem
 /// Whether the fixed vertices span the space: at least d + 1 of them, not
 /// all on one hyperplane (nor within a thousandth of their extent of one).
 /// Otherwise a map of zero volume keeps them in place: every free vertex
-/// moved onto their point, line or plane.
+/// moved onto their point, line or plane.  The vertices looked at are
+/// [0, `vertices`) (a distributed part's own), all by default.
 template <int d>
-bool fixed_vertices_span_space(const Untangling_problem<d>& P)
+bool fixed_vertices_span_space(const Untangling_problem<d>& P, const Problem_reductions& over = {},
+                               std::size_t vertices = std::numeric_limits<std::size_t>::max())
 {
   using Vector = typename Untangling_problem<d>::Vector;
   using Matrix = Eigen::Matrix<double, d, d>;
-  if(P.number_of_fixed_vertices <= std::size_t(d)) return false;
-  Vector mean = Vector::Zero();
-  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(P.is_fixed[v] == 1) mean += P.point(v);
-  mean /= double(P.number_of_fixed_vertices);
+  vertices = (std::min)(vertices, P.number_of_vertices);
+  Eigen::Matrix<double, d + 1, 1> count_and_sum = Eigen::Matrix<double, d + 1, 1>::Zero();
+  for(std::size_t v = 0; v < vertices; ++v)
+    if(P.is_fixed[v] == 1) { count_and_sum(0) += 1; count_and_sum.template tail<d>() += P.point(v); }
+  over.add_up(count_and_sum.data(), d + 1);
+  if(count_and_sum(0) <= d) return false;
+  const Vector mean = count_and_sum.template tail<d>() / count_and_sum(0);
   Matrix scatter = Matrix::Zero();
-  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+  for(std::size_t v = 0; v < vertices; ++v)
     if(P.is_fixed[v] == 1) scatter.noalias() += (P.point(v) - mean) * (P.point(v) - mean).transpose();
+  over.add_up(scatter.data(), d * d);
   // squared widths, increasing: a thickness of 1e-3 of the extent is a ratio of 1e-6
   const Vector squared_widths = Eigen::SelfAdjointEigenSolver<Matrix>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
   return squared_widths(0) > 1e-6 * squared_widths(d - 1);
@@ -295,7 +315,7 @@ std::optional<std::vector<Eigen::Matrix<double, d, 1>>> rest_shape(const Untangl
 
 /// Sign of the total signed volume of the map (+1 when zero).
 template <int d>
-int map_volume_sign(const Untangling_input<d>& in)
+int map_volume_sign(const Untangling_input<d>& in, const Problem_reductions& over = {})
 {
   double volume = 0;
   for(std::size_t k = 0; k < in.number_of_mesh_elements(); ++k) {
@@ -304,8 +324,21 @@ int map_volume_sign(const Untangling_input<d>& in)
     for(int i = 0; i <= d; ++i) image[i] = in.positions[e[i]];
     volume += simplex_volume<d>(image);
   }
+  over.add_up(&volume, 1);
   return volume < 0 ? -1 : 1;
 }
+
+/// How messages about an input name its vertices and elements: by their
+/// indices, or, for one process's part of a distributed mesh, by the ids
+/// they have in the whole mesh.
+struct Input_names
+{
+  const std::vector<std::size_t>* global_vertex = nullptr;    // per vertex; null: the index
+  const std::vector<std::size_t>* global_element = nullptr;   // per element; null: the index
+
+  std::string vertex(std::size_t v) const { return std::to_string(global_vertex ? (*global_vertex)[v] : v); }
+  std::string element(std::size_t k) const { return std::to_string(global_element ? (*global_element)[k] : k); }
+};
 
 /// Checks sizes, vertex ids and finiteness; throws std::invalid_argument
 /// with a message naming the element or vertex.
@@ -348,9 +381,10 @@ void validate_input(const Untangling_input<d>& in)
 
 /// Rejects elements that make a star ambiguous: the same vertices twice
 /// (in any order), and a facet (2D: an edge, 3D: a triangle) shared by more
-/// than two elements.  Throws std::invalid_argument naming the elements.
+/// than two elements.  Throws std::invalid_argument naming the elements,
+/// and their vertices, by the ids `name` gives (by default their indices).
 template <int d>
-void validate_manifold_facets(const Untangling_input<d>& in)
+void validate_manifold_facets(const Untangling_input<d>& in, const Input_names& name = {})
 {
   using Facet = std::array<std::size_t, d>;
   using Simplex = std::array<std::size_t, d + 1>;
@@ -383,16 +417,16 @@ void validate_manifold_facets(const Untangling_input<d>& in)
       std::sort(own.begin(), own.end());
       for(std::size_t i = 1; i < own.size() && same_vertices[chunk].empty(); ++i)
         if(own[i].first == own[i - 1].first)
-          same_vertices[chunk] = "elements " + std::to_string(own[i - 1].second) + " and " +
-                                 std::to_string(own[i].second) + " have the same vertices";
+          same_vertices[chunk] = "elements " + name.element(own[i - 1].second) + " and " +
+                                 name.element(own[i].second) + " have the same vertices";
       std::sort(facets.begin(), facets.end());
       for(std::size_t i = 2; i < facets.size() && shared_facet[chunk].empty(); ++i)
         if(facets[i].first == facets[i - 2].first) {
           std::string names;
-          for(int j = 0; j < d; ++j) names += (j ? " " : "") + std::to_string(facets[i].first[j]);
+          for(int j = 0; j < d; ++j) names += (j ? " " : "") + name.vertex(facets[i].first[j]);
           shared_facet[chunk] = std::string(d == 2 ? "edge (" : "face (") + names + ") is shared by elements " +
-                                std::to_string(facets[i - 2].second) + ", " + std::to_string(facets[i - 1].second) +
-                                " and " + std::to_string(facets[i].second) +
+                                name.element(facets[i - 2].second) + ", " + name.element(facets[i - 1].second) +
+                                " and " + name.element(facets[i].second) +
                                 ": more than two elements make its stars non-manifold";
         }
       if(!same_vertices[chunk].empty()) break;   // (that one is said first)
@@ -465,15 +499,20 @@ constexpr double default_degenerate_quality = 1e-4;
 /// P.x: the map centred on the bounding box of its elements, with a unit
 /// largest extent (P.center, P.scale).
 template <int d>
-void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
+void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P, const Problem_reductions& over = {})
 {
   using Vector = Eigen::Matrix<double, d, 1>;
   const std::size_t n = in.positions.size();
   // the bounding box of the vertices that elements use: a vertex in no
   // element, however far, must not squeeze the mesh into a corner
-  Vector lo = in.positions[in.elements[0][0]], hi = lo;
+  Eigen::Matrix<double, 2 * d, 1> box = Eigen::Matrix<double, 2 * d, 1>::Constant(-std::numeric_limits<double>::infinity());
   for(const auto& e : in.elements)
-    for(std::size_t v : e) { lo = lo.cwiseMin(in.positions[v]); hi = hi.cwiseMax(in.positions[v]); }
+    for(std::size_t v : e) {
+      box.template head<d>() = box.template head<d>().cwiseMax(in.positions[v]);
+      box.template tail<d>() = box.template tail<d>().cwiseMax(-in.positions[v]);
+    }
+  over.take_max(box.data(), 2 * d);
+  const Vector hi = box.template head<d>(), lo = -box.template tail<d>();
   P.center = (lo + hi) / 2;
   P.scale = (hi - lo).maxCoeff() > 0 ? (hi - lo).maxCoeff() : 1.;
   P.x.resize(d * n);
@@ -488,11 +527,12 @@ void normalize_map(const Untangling_input<d>& in, Untangling_problem<d>& P)
 /// the exponent of the power of two that oriented_targets() divides them by
 /// (exactly); target_scale_factor() multiplies it back.
 template <int d>
-int extreme_target_exponent(const Untangling_input<d>& in)
+int extreme_target_exponent(const Untangling_input<d>& in, const Problem_reductions& over = {})
 {
   double largest = 0;
   for(const auto& t : in.targets)
     for(const auto& p : t) largest = (std::max)(largest, p.cwiseAbs().maxCoeff());
+  over.take_max(&largest, 1);
   int exponent = 0;
   if(largest > 0 && std::isfinite(largest)) std::frexp(largest, &exponent);
   return std::abs(exponent) > 96 ? exponent : 0;
@@ -511,9 +551,18 @@ class Target_reader
 public:
   using Target = std::array<Eigen::Matrix<double, d, 1>, d + 1>;
 
-  explicit Target_reader(const Untangling_input<d>& in)
-    : in_(in), exponent_(extreme_target_exponent(in)), map_is_negative_(in.targets.empty() && map_volume_sign<d>(in) < 0)
+  explicit Target_reader(const Untangling_input<d>& in, const Problem_reductions& over = {})
+    : in_(in), exponent_(extreme_target_exponent(in, over)),
+      map_is_negative_(!targets_given(in, over) && map_volume_sign<d>(in, over) < 0)
   {}
+
+  /// Whether any part has targets (a distributed part without elements has none of its own).
+  static bool targets_given(const Untangling_input<d>& in, const Problem_reductions& over)
+  {
+    double given = in.targets.empty() ? 0. : 1.;
+    over.take_max(&given, 1);
+    return given > 0;
+  }
 
   Target operator()(std::size_t k) const
   {
@@ -540,7 +589,7 @@ struct Target_orientation_rule
 
   template <int d>
   void read(const Untangling_input<d>& in, double degenerate_quality, const Target_reader<d>& target,
-            std::vector<typename Target_reader<d>::Target>* targets)
+            std::vector<typename Target_reader<d>::Target>* targets, const Problem_reductions& over = {})
   {
     const std::size_t m = in.elements.size();
     targets_given = !in.targets.empty();
@@ -558,7 +607,10 @@ struct Target_orientation_rule
     for(std::size_t k = 0; k < m; ++k)
       if(!degenerate[k]) { total += std::abs(volume[k]); majority += volume[k] > 0 ? 1 : -1; }
     replaced = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
-    mean_volume = m > replaced ? total / double(m - replaced) : 1.;
+    double kept[3] = {total, double(majority), double(m - replaced)};
+    over.add_up(kept, 3);
+    majority = int(kept[1]);
+    mean_volume = kept[2] > 0 ? kept[0] / kept[2] : 1.;
   }
 
   /// The sign of the regular simplex that replaces the degenerate target k.
@@ -584,12 +636,13 @@ struct Target_orientation_rule
 /// P.degenerate_targets_replaced.
 template <int d>
 std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>
-oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untangling_problem<d>& P)
+oriented_targets(const Untangling_input<d>& in, double degenerate_quality, Untangling_problem<d>& P,
+                 const Problem_reductions& over = {})
 {
   const std::size_t m = in.elements.size();
   std::vector<typename Target_reader<d>::Target> targets(m);
   Target_orientation_rule rule;
-  rule.read<d>(in, degenerate_quality, Target_reader<d>(in), &targets);
+  rule.read<d>(in, degenerate_quality, Target_reader<d>(in, over), &targets, over);
   P.degenerate_targets_replaced = rule.replaced;
   const double regular_size = std::pow(rule.mean_volume, 1. / d);
   P.reference_orientation.resize(m);
@@ -630,9 +683,9 @@ std::vector<int> target_orientations(const Untangling_input<d>& in, std::size_t*
 template <int d>
 double target_scale_factor(const Untangling_input<d>& in, const Untangling_problem<d>& P,
                            const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets,
-                           Target_scaling scaling, std::vector<double>& scratch)
+                           Target_scaling scaling, std::vector<double>& scratch, const Problem_reductions& over = {})
 {
-  if(scaling != Target_scaling::MATCH_MAP_VOLUME) return std::ldexp(1. / P.scale, extreme_target_exponent(in));
+  if(scaling != Target_scaling::MATCH_MAP_VOLUME) return std::ldexp(1. / P.scale, extreme_target_exponent(in, over));
   const std::size_t mesh_m = in.number_of_mesh_elements();
   std::vector<double>& image_volume = scratch;
   image_volume.resize(std::max(image_volume.size(), mesh_m));
@@ -645,12 +698,14 @@ double target_scale_factor(const Untangling_input<d>& in, const Untangling_probl
       target_volume[k] = std::abs(simplex_volume<d>(targets[k]));
     }
   });
-  double signed_sum = 0, absolute_sum = 0, target_sum = 0;
+  double sums[3] = {0, 0, 0};   // signed, absolute, target
   for(std::size_t k = 0; k < mesh_m; ++k) {
-    signed_sum += image_volume[k];
-    absolute_sum += std::abs(image_volume[k]);
-    target_sum += target_volume[k];
+    sums[0] += image_volume[k];
+    sums[1] += std::abs(image_volume[k]);
+    sums[2] += target_volume[k];
   }
+  over.add_up(sums, 3);
+  const double signed_sum = sums[0], absolute_sum = sums[1], target_sum = sums[2];
   const double wanted = signed_sum > 1e-3 * absolute_sum ? signed_sum : absolute_sum;
   return wanted > 0 ? std::pow(wanted / target_sum, 1. / d) : 1.;
 }
@@ -661,7 +716,7 @@ double target_scale_factor(const Untangling_input<d>& in, const Untangling_probl
 template <int d>
 void add_elements(const Untangling_input<d>& in,
                   const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets, double target_factor,
-                  Untangling_problem<d>& P)
+                  Untangling_problem<d>& P, const Problem_reductions& over = {})
 {
   const std::size_t m = in.elements.size();
   std::vector<std::size_t> kept(m + 1, 0);   // kept[k]: elements kept before k
@@ -678,7 +733,7 @@ void add_elements(const Untangling_input<d>& in,
   P.gradient_operators.resize(kept_count);
   P.weights.resize(kept_count);
   // the factor from the input's target units to the problem's, for given weights (oriented_targets())
-  const double unit = std::ldexp(target_factor, -extreme_target_exponent(in));
+  const double unit = std::ldexp(target_factor, -extreme_target_exponent(in, over));
   for_each_chunk(m, element_chunk_size, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t k = first; k < last; ++k) {
       if(kept[k + 1] == kept[k]) continue;
@@ -703,6 +758,7 @@ void add_elements(const Untangling_input<d>& in,
   });
   double weight_sum = 0;
   for(double w : P.weights) weight_sum += w;
+  over.add_up(&weight_sum, 1);
   for(double& w : P.weights) w /= weight_sum;
 }
 
@@ -730,11 +786,15 @@ void hold_vertices_in_no_element(const Untangling_input<d>& in, Untangling_probl
 enum class Element_order { COLOURED, AS_GIVEN };
 
 /// Builds the normalized problem of `in`, which must be valid (validate_input()).
+/// `over` completes its sums: one process's part of a distributed problem
+/// (whose `scaling` is then resolved already) is built with the whole
+/// problem's normalization, target scale and weights.
 template <int d>
 Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
                                               Target_scaling scaling = Target_scaling::AUTOMATIC,
                                               double degenerate_quality = default_degenerate_quality,
-                                              Element_order order = Element_order::COLOURED)
+                                              Element_order order = Element_order::COLOURED,
+                                              const Problem_reductions& over = {})
 {
   const std::size_t n = in.positions.size();
   Untangling_problem<d> P;
@@ -744,7 +804,7 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
     P.is_fixed[v] = in.is_fixed[v] ? 1 : 0;
   P.number_of_fixed_vertices = std::count(P.is_fixed.begin(), P.is_fixed.end(), 1);
   hold_vertices_in_no_element(in, P);
-  normalize_map(in, P);
+  normalize_map(in, P, over);
   if(in.has_links()) {
     P.links = normalized_links<d>(in.links, P.center, P.scale);
     P.links.finish();
@@ -753,9 +813,10 @@ Untangling_problem<d> make_untangling_problem(const Untangling_input<d>& in,
   P.sliding = in.sliding;
   {
     std::vector<double> scratch;
-    auto targets = oriented_targets<d>(in, degenerate_quality, P);
-    const double target_factor = target_scale_factor<d>(in, P, targets, resolved_target_scaling<d>(in, scaling), scratch);
-    add_elements<d>(in, targets, target_factor, P);
+    auto targets = oriented_targets<d>(in, degenerate_quality, P, over);
+    const double target_factor =
+      target_scale_factor<d>(in, P, targets, resolved_target_scaling<d>(in, scaling), scratch, over);
+    add_elements<d>(in, targets, target_factor, P, over);
   }   // (the colouring's own arrays reach the peak memory of a large run)
   if(order == Element_order::COLOURED) sort_elements_by_colour(P);
   return P;
