@@ -13,6 +13,7 @@
 // message of process 0 and exit code 2; a run that does not end locally
 // invertible exits with 1, as untangle_mesh does.
 #include "memory_reuse.h"
+#include "mesh_parts.h"
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
@@ -38,12 +39,13 @@ namespace {
 namespace MU = CGAL::Mesh_untangling;
 namespace IO = CGAL::Mesh_untangling::IO;
 using Mesh_untangling_tools::Mesh_file;
+using Mesh_untangling_tools::Mesh_part;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Arguments
 {
   std::string input, rest, fixed, output, report;
-  bool fix_boundary = false, quiet = false;
+  bool fix_boundary = false, quiet = false, parts = false;
   int threads = 1;
   double theta = -1, time_limit = -1;
   std::size_t max_iterations = MU::default_number_of_iterations;
@@ -91,6 +93,27 @@ Problem read_problem(const Arguments& args)
   return p;
 }
 
+/// This process's part of a mesh given in parts, its rest and its fixed vertices.
+Problem read_part(const Arguments& args, int rank, Mesh_part& part)
+{
+  Problem p;
+  const std::string path = Mesh_untangling_tools::part_path(args.input, rank);
+  part = Mesh_untangling_tools::read_mesh_part(path);
+  p.mesh = part.mesh;
+  if(!args.rest.empty()) {
+    const std::string rest_path = Mesh_untangling_tools::part_path(args.rest, rank);
+    const Mesh_part rest = Mesh_untangling_tools::read_mesh_part(rest_path);
+    if(rest.vertex_id != part.vertex_id || rest.mesh.simplices != part.mesh.simplices)
+      throw Usage_error(rest_path + ": its vertices or elements are not " + path + "'s: a rest part has its part's "
+                        "vertices and elements, in the same order");
+    p.rest = rest.mesh.rest.empty() ? rest.mesh.map : rest.mesh.rest;
+  }
+  p.fixed.assign(p.mesh.map.size(), false);
+  for(std::size_t v : p.mesh.fixed) p.fixed[v] = true;
+  p.fixed_source = p.mesh.has_fixed ? args.input : "none";
+  return p;
+}
+
 /// The largest resident memory of this process so far, in bytes (Linux), or 0.
 double peak_memory()
 {
@@ -107,27 +130,46 @@ std::vector<double> peak_memory_per_process(MPI_Comm comm)
 }
 
 template <int d>
-MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibility_report& verdict,
-                               double& solve_seconds, MPI_Comm comm)
+using Point_d = std::conditional_t<d == 2, Kernel::Point_2, Kernel::Point_3>;
+
+template <int d>
+Point_d<d> to_point(const std::array<double, 3>& c)
 {
-  using Point = std::conditional_t<d == 2, Kernel::Point_2, Kernel::Point_3>;
-  const auto point = [](const std::array<double, 3>& c) {
-    if constexpr(d == 2) return Point(c[0], c[1]);
-    else return Point(c[0], c[1], c[2]);
-  };
-  std::vector<Point> points, rest;
+  if constexpr(d == 2) return Point_d<d>(c[0], c[1]);
+  else return Point_d<d>(c[0], c[1], c[2]);
+}
+
+/// The arrays the entry points take, from a mesh file's.
+template <int d>
+struct Soup
+{
+  std::vector<Point_d<d>> points, rest;
   std::vector<std::array<std::size_t, d + 1>> simplices;
-  std::vector<bool> fixed;
-  if(p) {
-    for(const auto& c : p->mesh.map) points.push_back(point(c));
-    for(const auto& c : p->rest) rest.push_back(point(c));
-    for(const auto& s : p->mesh.simplices) {
+
+  Soup(const Mesh_file& mesh, const std::vector<std::array<double, 3>>& rest_points)
+  {
+    for(const auto& c : mesh.map) points.push_back(to_point<d>(c));
+    for(const auto& c : rest_points) rest.push_back(to_point<d>(c));
+    for(const auto& s : mesh.simplices) {
       std::array<std::size_t, d + 1> e;
       std::copy(s.begin(), s.begin() + d + 1, e.begin());
       simplices.push_back(e);
     }
-    fixed = p->fixed;
   }
+
+  void write_back(Mesh_file& mesh) const
+  {
+    for(std::size_t v = 0; v < points.size(); ++v)
+      for(int c = 0; c < d; ++c) mesh.map[v][c] = CGAL::to_double(points[v][c]);
+  }
+};
+
+/// `call(np)` with the named parameters the arguments give.
+template <int d, class Call>
+MU::Untangling_result with_parameters(const Arguments& args, const std::vector<bool>& fixed, const Soup<d>& soup,
+                                      MU::Invertibility_report& verdict, double& solve_seconds, MPI_Comm comm,
+                                      const Call& call)
+{
   const auto progress = [&](const MU::Untangling_step& s) {
     solve_seconds = s.seconds;
     if(!args.quiet)
@@ -142,13 +184,35 @@ MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibil
                       .number_of_iterations(args.max_iterations)
                       .maximum_running_time(args.time_limit >= 0 ? args.time_limit : std::numeric_limits<double>::infinity())
                       .callback(std::function<bool(const MU::Untangling_step&)>(progress))));
-  MU::Untangling_result r =
-    p && !p->rest.empty()
-      ? CGAL::untangle_simplex_soup_distributed(comm, points, simplices, MU::parameters::rest_points(rest, np))
-      : CGAL::untangle_simplex_soup_distributed(comm, points, simplices, np);
-  if(p)
-    for(std::size_t v = 0; v < points.size(); ++v)
-      for(int c = 0; c < d; ++c) p->mesh.map[v][c] = CGAL::to_double(points[v][c]);
+  int rest_given = soup.rest.empty() ? 0 : 1;   // (the same choice on every process)
+  MPI_Allreduce(MPI_IN_PLACE, &rest_given, 1, MPI_INT, MPI_MAX, comm);
+  return rest_given ? call(MU::parameters::rest_points(soup.rest, np)) : call(np);
+}
+
+/// The whole mesh, given on process 0 (`p`; null elsewhere).
+template <int d>
+MU::Untangling_result untangle(Problem* p, const Arguments& args, MU::Invertibility_report& verdict,
+                               double& solve_seconds, MPI_Comm comm)
+{
+  Soup<d> soup = p ? Soup<d>(p->mesh, p->rest) : Soup<d>(Mesh_file(), {});
+  const std::vector<bool> fixed = p ? p->fixed : std::vector<bool>();
+  MU::Untangling_result r = with_parameters<d>(args, fixed, soup, verdict, solve_seconds, comm, [&](const auto& np) {
+    return CGAL::untangle_simplex_soup_distributed(comm, soup.points, soup.simplices, np);
+  });
+  if(p) soup.write_back(p->mesh);
+  return r;
+}
+
+/// This process's part of a mesh given in parts.
+template <int d>
+MU::Untangling_result untangle_part(Problem& p, const Mesh_part& part, const Arguments& args,
+                                    MU::Invertibility_report& verdict, double& solve_seconds, MPI_Comm comm)
+{
+  Soup<d> soup(p.mesh, p.rest);
+  MU::Untangling_result r = with_parameters<d>(args, p.fixed, soup, verdict, solve_seconds, comm, [&](const auto& np) {
+    return CGAL::untangle_simplex_soup_parts(comm, soup.points, part.vertex_id, soup.simplices, part.element_id, np);
+  });
+  soup.write_back(p.mesh);
   return r;
 }
 
@@ -225,8 +289,77 @@ bool succeeds_on_process_0(int rank, MPI_Comm comm, const Attempt& attempt)
   return failure.empty();
 }
 
+/// Whether `attempt` succeeds on every process; the first failure's message is printed by process 0.
+template <class Attempt>
+bool succeeds_everywhere(int rank, MPI_Comm comm, const Attempt& attempt)
+{
+  std::string failure;
+  try {
+    attempt();
+  } catch(const IO::Read_error& e) {
+    failure = e.what();
+  } catch(const IO::Write_error& e) {
+    failure = e.what();
+  } catch(const Usage_error& e) {
+    failure = e.what();
+  } catch(const std::invalid_argument& e) {
+    failure = e.what();
+  } catch(const std::bad_alloc&) {
+    failure = "process " + std::to_string(rank) + ": out of memory";
+  }
+  failure = MU::distributed::internal::first_refusal(failure, comm);
+  if(!failure.empty() && rank == 0) std::cerr << "untangle_mesh_mpi: error: " << failure << "\n";
+  return failure.empty();
+}
+
+/// A mesh given in parts: each process reads, untangles and writes its own.
+int run_parts(const Arguments& args, MPI_Comm comm)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  Problem problem;
+  Mesh_part part;
+  if(!succeeds_everywhere(rank, comm, [&] {
+       if(args.fix_boundary || !args.fixed.empty())
+         throw Usage_error(std::string(args.fix_boundary ? "--fix-boundary" : "--fixed") + " takes a whole mesh: "
+                           "parts carry their fixed vertices as the point field 'fixed' (mesh_parts split "
+                           "--fix-boundary or --fixed writes it)");
+       Mesh_untangling_tools::check_part_format(Mesh_untangling_tools::part_path(args.output, rank));
+       if(const std::string extra = Mesh_untangling_tools::part_path(args.input, size);
+          rank == 0 && std::ifstream(extra).good())
+         throw Usage_error(extra + " exists: " + std::to_string(size + 1) + " part files or more for " +
+                           std::to_string(size) + " processes (run one process per part)");
+       problem = read_part(args, rank, part);
+     }))
+    return 2;
+  int dimension = problem.mesh.simplex_size - 1;
+  MPI_Allreduce(MPI_IN_PLACE, &dimension, 1, MPI_INT, MPI_MAX, comm);
+  MU::Invertibility_report verdict;
+  double solve_seconds = 0;
+  const MU::Untangling_result r = dimension == 2 ? untangle_part<2>(problem, part, args, verdict, solve_seconds, comm)
+                                                 : untangle_part<3>(problem, part, args, verdict, solve_seconds, comm);
+  if(r.status == MU::Untangling_status::INVALID_INPUT) {
+    if(rank == 0) std::cerr << "untangle_mesh_mpi: error: " << args.input << ": " << r.message << "\n";
+    return 2;
+  }
+  const std::vector<double> memory = peak_memory_per_process(comm);
+  part.mesh = problem.mesh;
+  if(!succeeds_everywhere(rank, comm, [&] {
+       Mesh_untangling_tools::write_mesh_part(Mesh_untangling_tools::part_path(args.output, rank), part);
+       if(rank == 0 && !args.report.empty())
+         write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
+     }))
+    return 2;
+  if(rank == 0)
+    std::cerr << "untangle_mesh_mpi: " << MU::to_string(r.status) << " (" << size << " processes, "
+              << r.inverted_before << " inverted before, " << r.inverted_after << " after, " << r.seconds << " s)\n";
+  return r.status == MU::Untangling_status::SUCCESS ? 0 : 1;
+}
+
 int run(const Arguments& args, MPI_Comm comm)
 {
+  if(args.parts) return run_parts(args, comm);
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -281,6 +414,10 @@ int main(int argc, char** argv)
     ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", args.threads, "threads per process (default 1: one process per core); the result "
                  "is the same, bit for bit, with any number")->check(CLI::Range(1, Mesh_untangling_tools::max_thread_count));
+  app.add_flag("--parts", args.parts, "INPUT, --rest and --output are part files, one per process, '%' in their "
+               "names standing for its number: each process reads and writes its own (.vtk or .vtu with the point "
+               "and cell fields 'global_id' and the point field 'fixed', as mesh_parts split writes them); no "
+               "process holds the whole mesh.  The boundary must be fixed");
   app.add_flag("-q,--quiet", args.quiet, "no line per eps step on stderr");
   app.set_version_flag("-V,--version", std::string("untangle_mesh_mpi ") + CGAL_MESH_UNTANGLING_VERSION);
   int code = 0;

@@ -59,6 +59,16 @@ struct Rank_part
   std::size_t number_of_vertices() const { return global_vertex.size(); }
 };
 
+/// The local id of the vertex of global id `global`, which the part must have.
+template <int d>
+std::size_t local_vertex(const Rank_part<d>& part, std::size_t global)
+{
+  const auto own_end = part.global_vertex.begin() + std::ptrdiff_t(part.own_vertices);
+  auto at = std::lower_bound(part.global_vertex.begin(), own_end, global);
+  if(at == own_end || *at != global) at = std::lower_bound(own_end, part.global_vertex.end(), global);
+  return std::size_t(at - part.global_vertex.begin());
+}
+
 namespace internal {
 
 /// Vectors of plain values one after the other in bytes, each preceded by its length.
@@ -111,48 +121,6 @@ private:
   std::vector<char> bytes_;
   std::size_t read_at_ = 0;
 };
-
-template <int d>
-void write_part(const Rank_part<d>& p, Byte_buffer& b)
-{
-  b.write_value(p.own_vertices);
-  b.write_value(p.own_mesh_vertices);
-  b.write(p.global_vertex);
-  b.write(p.owner);
-  b.write(p.owner_index);
-  b.write(p.x);
-  b.write(p.position);
-  b.write(p.is_fixed);
-  b.write_value(p.own_elements);
-  b.write(p.global_element);
-  b.write(p.elements);
-  b.write(p.reference_orientation);
-  b.write(p.energy_elements);
-  b.write(p.gradient_operators);
-  b.write(p.weights);
-}
-
-template <int d>
-Rank_part<d> read_part(Byte_buffer& b)
-{
-  Rank_part<d> p;
-  p.own_vertices = b.read_value<std::size_t>();
-  p.own_mesh_vertices = b.read_value<std::size_t>();
-  b.read(p.global_vertex);
-  b.read(p.owner);
-  b.read(p.owner_index);
-  b.read(p.x);
-  b.read(p.position);
-  b.read(p.is_fixed);
-  p.own_elements = b.read_value<std::size_t>();
-  b.read(p.global_element);
-  b.read(p.elements);
-  b.read(p.reference_orientation);
-  b.read(p.energy_elements);
-  b.read(p.gradient_operators);
-  b.read(p.weights);
-  return p;
-}
 
 /// MPI counts are ints: bytes go in pieces of at most this many.
 constexpr std::size_t message_piece = std::size_t(1) << 30;

@@ -1,10 +1,12 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A distributed run from a problem that process 0 holds: the input checked
-// and the problem built there as the serial entry points do, split and
-// sent, untangled by every process, judged by the distributed verdict, and
-// the free vertices' positions gathered back on process 0.
+// A distributed run: every process builds its part (build_part.h) and
+// all untangle together (Distributed_eps_loop) and judge the result
+// (distributed_verdict.h).  The parts come from the caller, or from a whole
+// input on process 0, checked and protected there as the serial entry
+// points do, then split and sent (split_input.h), the free vertices'
+// positions gathered back on process 0.
 #ifndef CGAL_MESH_UNTANGLING_DISTRIBUTED_UNTANGLE_DISTRIBUTED_H
 #define CGAL_MESH_UNTANGLING_DISTRIBUTED_UNTANGLE_DISTRIBUTED_H
 
@@ -13,7 +15,8 @@
 #include <CGAL/Mesh_untangling/distributed/Distributed_eps_loop.h>
 #include <CGAL/Mesh_untangling/distributed/Ghost_exchange.h>
 #include <CGAL/Mesh_untangling/distributed/distributed_verdict.h>
-#include <CGAL/Mesh_untangling/distributed/split_problem.h>
+#include <CGAL/Mesh_untangling/distributed/build_part.h>
+#include <CGAL/Mesh_untangling/distributed/split_input.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/boundary_protection.h>
 #include <CGAL/Mesh_untangling/internal/verdict.h>
@@ -33,14 +36,13 @@ namespace Mesh_untangling {
 namespace distributed {
 namespace internal {
 
-/// What process 0 decides about the input and every process needs.
-template <int d>
+/// What process 0 decides about a whole input and every process needs.
 struct Setup
 {
   bool valid = false;
-  std::size_t vertices = 0, elements = 0, fixed = 0, degenerate_targets_replaced = 0;   // (the mesh's)
+  std::size_t vertices = 0, elements = 0;   // (the mesh's)
   std::size_t phantom_elements = 0, phantom_vertices = 0, incomplete_phantom_stars = 0;
-  double center[d] = {}, scale = 1, largest_epsilon = 0;
+  Target_scaling scaling = Target_scaling::MATCH_MAP_VOLUME;
 };
 
 /// Process 0's message, on every process.
@@ -53,14 +55,12 @@ inline std::string broadcast_text(std::string text, MPI_Comm comm)
   return text;
 }
 
-/// The problem of `in` on process 0, or why there is none: `in` checked,
-/// protected by phantoms as `request` asks (MU::protect_boundary: where a
-/// boundary vertex is free), and made into the serial problem, the
-/// elements in the input's order.
+/// On process 0: `in` checked and protected by phantoms as `request` asks
+/// (MU::protect_boundary: where a boundary vertex is free), as the serial
+/// entry points do; false and the `refusal` if it is not valid.
 template <int d>
-std::optional<MU::Untangling_problem<d>> root_problem(MU::Untangling_input<d>& in,
-                                                      const MU::Protection_request<d>& request, double theta,
-                                                      Setup<d>& setup, std::string& refusal)
+bool prepare_whole_input(MU::Untangling_input<d>& in, const MU::Protection_request<d>& request, Setup& setup,
+                         std::string& refusal)
 {
   try {
     MU::validate_input<d>(in);
@@ -71,31 +71,22 @@ std::optional<MU::Untangling_problem<d>> root_problem(MU::Untangling_input<d>& i
     setup.phantom_elements = protection.phantom_elements;
     setup.phantom_vertices = protection.phantom_vertices;
     setup.incomplete_phantom_stars = protection.incomplete_stars;
-    auto P = MU::make_untangling_problem<d>(in, Target_scaling::AUTOMATIC, MU::default_degenerate_quality,
-                                            MU::Element_order::AS_GIVEN);
+    setup.scaling = MU::resolved_target_scaling<d>(in, Target_scaling::AUTOMATIC);
     setup.valid = true;
-    setup.fixed = P.number_of_fixed_vertices;
-    setup.degenerate_targets_replaced = P.degenerate_targets_replaced;
-    for(int c = 0; c < d; ++c) setup.center[c] = P.center[c];
-    setup.scale = P.scale;
-    setup.largest_epsilon = d == 3 && !MU::fixed_vertices_span_space(P) ? theta / 2 : std::numeric_limits<double>::infinity();
-    return P;
   } catch(const std::invalid_argument& e) {
     refusal = e.what();
-    return std::nullopt;
   }
+  return setup.valid;
 }
 
-/// The user's positions of every vertex the process sees: fixed ones as given, free ones from `x`.
+/// A part after the run: the user's positions of every vertex it sees
+/// (fixed ones as given, free ones from the solver's).
 template <int d>
-std::vector<double> user_positions(const Rank_part<d>& part, const std::vector<double>& x, const Setup<d>& setup)
+struct Part_result
 {
-  std::vector<double> position = part.position;
-  for(std::size_t v = 0; v < part.number_of_vertices(); ++v)
-    if(!part.is_fixed[v])
-      for(int c = 0; c < d; ++c) position[d * v + c] = x[d * v + c] * setup.scale + setup.center[c];
-  return position;
-}
+  Rank_part<d> part;
+  std::vector<double> position;
+};
 
 /// The own free mesh vertices' positions, gathered on process 0 into `all`
 /// (d per vertex, global ids; null elsewhere).
@@ -116,25 +107,84 @@ void gather_free_positions(const Rank_part<d>& part, const std::vector<double>& 
   for(const Moved& m : received) std::copy(m.position.begin(), m.position.end(), all->begin() + d * m.vertex);
 }
 
-/// Untangles the problem of `in` (process 0's, phantoms appended to it as
-/// `protection` asks; elsewhere ignored) over the
-/// processes of `comm`, unless process 0 gives a `refusal` (the input is
-/// then invalid, and that is the message).  On process 0 `positions` (d per vertex) receives
-/// the result and `verdict` the whole report; elsewhere the verdict's
-/// counts.  The result's figures are the same on every process.
+/// Builds every process's part from `mine` and untangles them together;
+/// `verdict` receives the report (its id lists on process 0), `out` the
+/// part and its positions.  `result` comes with the whole mesh's sizes;
+/// the figures returned are the same on every process.
+template <int d>
+Untangling_result untangle_parts(MPI_Comm comm, Part_input<d>&& mine, const Whole_mesh& whole, Loop_settings settings,
+                                 Untangling_result result, std::chrono::steady_clock::time_point start,
+                                 Invertibility_report& verdict, Part_result<d>& out)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  Part_summary<d> summary;
+  std::string refusal;
+  out.part = build_part<d>(std::move(mine), whole, comm, summary, refusal);
+  if(!refusal.empty()) {
+    result.status = Untangling_status::INVALID_INPUT;
+    result.message = refusal;
+    return result;
+  }
+  const Rank_part<d>& part = out.part;
+  result.number_of_fixed_vertices = summary.fixed;
+  result.degenerate_targets_replaced = summary.degenerate_targets_replaced;
+  settings.largest_epsilon =
+    d == 3 && !summary.fixed_vertices_span_space ? settings.theta / 2 : std::numeric_limits<double>::infinity();
+
+  const Ghost_exchange ghosts(part, comm);
+  const Invertibility_report before = check_distributed_elements(part, part.position, comm);
+  result.inverted_before = before.inverted_elements;
+
+  Distributed_eps_loop<d> loop(part, ghosts, comm, settings);
+  const Loop_outcome outcome = loop.run();
+  out.position = part.position;
+  std::vector<char> in_an_element(part.number_of_vertices(), 0);   // (the others stay as given, as in a serial run)
+  for(const auto& e : part.elements)
+    for(std::size_t v : e) in_an_element[v] = 1;
+  for(std::size_t v = part.own_mesh_vertices; v < part.number_of_vertices(); ++v) in_an_element[v] = 1;   // (phantoms, ghosts)
+  for(std::size_t v = 0; v < part.number_of_vertices(); ++v)
+    if(!part.is_fixed[v] && in_an_element[v])
+      for(int c = 0; c < d; ++c) out.position[d * v + c] = loop.x()[d * v + c] * summary.scale + summary.center[c];
+  verdict = check_distributed_map(part, out.position, comm);
+
+  MU::record_verdict(verdict, result);
+  result.status = MU::final_status(verdict, outcome.numerical_failure, outcome.stopped && !outcome.out_of_time,
+                                   outcome.out_of_time);
+  if(result.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT)
+    result.message = broadcast_text(rank == 0 ? MU::unrepairable_defects_message(verdict) : "", comm);
+  result.min_scaled_det_before = outcome.min_det_before;
+  result.min_scaled_det_after = outcome.min_det_after;
+  result.final_energy = outcome.energy;
+  result.final_epsilon = outcome.epsilon;
+  result.outer_iterations = outcome.outer_iterations;
+  result.inner_iterations = outcome.inner_iterations;
+  result.energy_evaluations = outcome.energy_evaluations;
+  result.solver = "lbfgs (distributed over " + std::to_string(size) + " processes)";
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MPI_Bcast(&seconds, 1, MPI_DOUBLE, 0, comm);
+  result.seconds = seconds;
+  return result;
+}
+
+/// Untangles `in` (process 0's, phantoms appended to it as `protection`
+/// asks; elsewhere ignored) over the processes of `comm`, unless process 0
+/// gives a `refusal` (the input is then invalid, and that is the message).
+/// On process 0 `positions` (d per vertex) receives the result and
+/// `verdict` the whole report; elsewhere the verdict's counts.  The
+/// result's figures are the same on every process.
 template <int d>
 Untangling_result untangle_distributed(MPI_Comm comm, MU::Untangling_input<d>* in, std::string refusal,
                                        const MU::Protection_request<d>& protection, Loop_settings settings,
                                        std::vector<double>* positions, Invertibility_report& verdict)
 {
   const auto start = std::chrono::steady_clock::now();
-  int rank = 0, size = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
   Untangling_result result;
-  Setup<d> setup;
-  std::optional<MU::Untangling_problem<d>> P;
-  if(rank == 0 && refusal.empty()) P = root_problem<d>(*in, protection, settings.theta, setup, refusal);
+  Setup setup;
+  if(rank == 0 && refusal.empty()) prepare_whole_input<d>(*in, protection, setup, refusal);
   MPI_Bcast(&setup, int(sizeof setup), MPI_BYTE, 0, comm);
   if(!setup.valid) {
     result.status = Untangling_status::INVALID_INPUT;
@@ -143,40 +193,17 @@ Untangling_result untangle_distributed(MPI_Comm comm, MU::Untangling_input<d>* i
   }
   result.number_of_vertices = setup.vertices;
   result.number_of_elements = setup.elements;
-  result.number_of_fixed_vertices = setup.fixed;
-  result.degenerate_targets_replaced = setup.degenerate_targets_replaced;
   result.number_of_phantom_elements = setup.phantom_elements;
   result.number_of_phantom_vertices = setup.phantom_vertices;
   result.incomplete_phantom_stars = setup.incomplete_phantom_stars;
-  settings.largest_epsilon = setup.largest_epsilon;
-
-  const Rank_part<d> part = scatter_parts<d>(in, P ? &*P : nullptr, comm);
-  P.reset();   // (process 0 keeps the input alone)
-  const Ghost_exchange ghosts(part, comm);
-  const Invertibility_report before = check_distributed_elements(part, part.position, comm);
-  result.inverted_before = before.inverted_elements;
-
-  Distributed_eps_loop<d> loop(part, ghosts, comm, settings);
-  const Loop_outcome out = loop.run();
-  const std::vector<double> position = user_positions(part, loop.x(), setup);
-  verdict = check_distributed_map(part, position, comm);
-  gather_free_positions(part, position, rank == 0 ? positions : nullptr, comm);
-
-  MU::record_verdict(verdict, result);
-  result.status = MU::final_status(verdict, out.numerical_failure, out.stopped && !out.out_of_time, out.out_of_time);
-  if(result.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT)
-    result.message = broadcast_text(rank == 0 ? MU::unrepairable_defects_message(verdict) : "", comm);
-  result.min_scaled_det_before = out.min_det_before;
-  result.min_scaled_det_after = out.min_det_after;
-  result.final_energy = out.energy;
-  result.final_epsilon = out.epsilon;
-  result.outer_iterations = out.outer_iterations;
-  result.inner_iterations = out.inner_iterations;
-  result.energy_evaluations = out.energy_evaluations;
-  result.solver = "lbfgs (distributed over " + std::to_string(size) + " processes)";
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MPI_Bcast(&seconds, 1, MPI_DOUBLE, 0, comm);
-  result.seconds = seconds;
+  Whole_mesh whole;
+  whole.vertices = setup.vertices;
+  whole.scaling = setup.scaling;
+  Part_result<d> out;
+  result = untangle_parts<d>(comm, scatter_input<d>(rank == 0 ? in : nullptr, comm), whole, settings, result, start,
+                             verdict, out);
+  if(result.status != Untangling_status::INVALID_INPUT)
+    gather_free_positions(out.part, out.position, rank == 0 ? positions : nullptr, comm);
   return result;
 }
 

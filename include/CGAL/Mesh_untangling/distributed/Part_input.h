@@ -1,0 +1,112 @@
+// Copyright (c) 2026 Mesh_untangling contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One process's share of a mesh as it is handed over, before any
+// exchange: the elements it owns and the vertices they use, each named by
+// its id in the whole mesh.
+#ifndef CGAL_MESH_UNTANGLING_DISTRIBUTED_PART_INPUT_H
+#define CGAL_MESH_UNTANGLING_DISTRIBUTED_PART_INPUT_H
+
+#include <CGAL/Mesh_untangling/distributed/Rank_part.h>
+#include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_untangling {
+namespace distributed {
+namespace internal {
+
+namespace MU = CGAL::Mesh_untangling::internal;
+
+/// `in` holds the part's vertices (any order) and its own elements: the
+/// mesh's first, then its phantoms (`in.phantom_elements`; `in.phantom_vertices`
+/// is not used: a phantom vertex is one whose global id is at least the
+/// mesh's number of vertices).  A vertex that several parts use has the
+/// same global id, position and fixed flag in each.
+template <int d>
+struct Part_input
+{
+  MU::Untangling_input<d> in;
+  std::vector<std::size_t> global_vertex;    // per vertex of `in`
+  std::vector<std::size_t> global_element;   // per mesh element of `in`
+};
+
+/// Why a caller's part is no valid part, in words; empty if it is.  (Its
+/// vertices and elements are named by their indices in the part.)
+template <int d>
+std::string part_input_refusal(const Part_input<d>& p)
+{
+  if(!p.in.elements.empty()) {
+    try {
+      MU::validate_input<d>(p.in);
+    } catch(const std::invalid_argument& e) {
+      return e.what();
+    }
+  }
+  std::vector<std::size_t> by_id(p.global_vertex.size());
+  std::iota(by_id.begin(), by_id.end(), std::size_t(0));
+  std::sort(by_id.begin(), by_id.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(p.global_vertex[a], a) < std::make_pair(p.global_vertex[b], b);
+  });
+  for(std::size_t i = 1; i < by_id.size(); ++i)
+    if(p.global_vertex[by_id[i]] == p.global_vertex[by_id[i - 1]])
+      return "points " + std::to_string(by_id[i - 1]) + " and " + std::to_string(by_id[i]) + " have the same global id " +
+             std::to_string(p.global_vertex[by_id[i]]);
+  return std::string();
+}
+
+template <int d>
+void write_part_input(const Part_input<d>& p, Byte_buffer& b)
+{
+  std::vector<double> positions, targets;
+  for(const auto& x : p.in.positions) positions.insert(positions.end(), x.data(), x.data() + d);
+  for(const auto& t : p.in.targets)
+    for(const auto& x : t) targets.insert(targets.end(), x.data(), x.data() + d);
+  b.write(positions);
+  b.write(p.in.elements);
+  b.write(targets);
+  b.write(std::vector<char>(p.in.is_fixed.begin(), p.in.is_fixed.end()));
+  b.write(p.in.weights);
+  b.write_value(p.in.phantom_elements);
+  b.write(p.global_vertex);
+  b.write(p.global_element);
+}
+
+template <int d>
+Part_input<d> read_part_input(Byte_buffer& b)
+{
+  Part_input<d> p;
+  std::vector<double> positions, targets;
+  std::vector<char> fixed;
+  b.read(positions);
+  b.read(p.in.elements);
+  b.read(targets);
+  b.read(fixed);
+  b.read(p.in.weights);
+  p.in.phantom_elements = b.read_value<std::size_t>();
+  b.read(p.global_vertex);
+  b.read(p.global_element);
+  p.in.positions.resize(positions.size() / d);
+  for(std::size_t v = 0; v < p.in.positions.size(); ++v)
+    for(int c = 0; c < d; ++c) p.in.positions[v][c] = positions[d * v + c];
+  p.in.targets.resize(targets.size() / (d * (d + 1)));
+  for(std::size_t k = 0; k < p.in.targets.size(); ++k)
+    for(int i = 0; i <= d; ++i)
+      for(int c = 0; c < d; ++c) p.in.targets[k][i][c] = targets[d * ((d + 1) * k + i) + c];
+  p.in.is_fixed.assign(fixed.begin(), fixed.end());
+  return p;
+}
+
+} // namespace internal
+} // namespace distributed
+} // namespace Mesh_untangling
+} // namespace CGAL
+
+#endif // CGAL_MESH_UNTANGLING_DISTRIBUTED_PART_INPUT_H
