@@ -3,7 +3,9 @@
 # cubes (make_tangled_mesh cube N 0.6 1: 6 N^3 tetrahedra, the boundary
 # fixed, the rest given): untangle_mesh (default, and --solver lbfgs: the
 # published scheme with LBFGSpp) and untangle_mesh_mpi on each process
-# count, one thread per process.  Prints one row per run: seconds (and the
+# count, one thread per process, the whole mesh read by process 0 and, with
+# mesh_parts, split into part files that each process reads (--parts).
+# Prints one row per run: seconds (and the
 # eps loop's alone), eps steps, energy
 # evaluations, the verdict, the peak memory of process 0 and of the
 # largest other process, and bytes per tetrahedron per process.
@@ -46,5 +48,13 @@ for n in $SIZES; do
     mpiexec --oversubscribe -n "$p" "$BIN/untangle_mesh_mpi" "cube$n.vtk" --rest "cube$n-rest.vtk" -o "mpi$p.vtk" \
       --report "mpi$p.json" -q > /dev/null 2>&1 || true
     row "$n" "untangle_mesh_mpi, $p processes" "mpi$p.json"
+    if [ -x "$BIN/mesh_parts" ]; then   # (the mesh given in parts: no process reads it whole)
+      "$BIN/mesh_parts" split "cube$n.vtk" "$p" "part$p.%.vtu" --rest "cube$n-rest.vtk" --rest-output "rest$p.%.vtu" \
+        > /dev/null 2>&1
+      mpiexec --oversubscribe -n "$p" "$BIN/untangle_mesh_mpi" --parts "part$p.%.vtu" --rest "rest$p.%.vtu" \
+        -o "out$p.%.vtu" --report "parts$p.json" -q > /dev/null 2>&1 || true
+      row "$n" "untangle_mesh_mpi --parts, $p processes" "parts$p.json"
+      rm -f part$p.*.vtu rest$p.*.vtu out$p.*.vtu
+    fi
   done
 done

@@ -266,12 +266,14 @@ void write_report(const std::string& path, const Arguments& args, const Problem&
   file.commit();
 }
 
-/// Process 0's verdict on `attempt` (a message when it failed), on every process.
+/// Whether `attempt` succeeds wherever it runs: on every process, or on
+/// process 0 alone (`everywhere` false).  The lowest failing process's
+/// message is printed by process 0.
 template <class Attempt>
-bool succeeds_on_process_0(int rank, MPI_Comm comm, const Attempt& attempt)
+bool succeeds(int rank, MPI_Comm comm, bool everywhere, const Attempt& attempt)
 {
   std::string failure;
-  if(rank == 0) {
+  if(everywhere || rank == 0) {
     try {
       attempt();
     } catch(const IO::Read_error& e) {
@@ -280,32 +282,11 @@ bool succeeds_on_process_0(int rank, MPI_Comm comm, const Attempt& attempt)
       failure = e.what();
     } catch(const Usage_error& e) {
       failure = e.what();
+    } catch(const std::invalid_argument& e) {
+      failure = e.what();
     } catch(const std::bad_alloc&) {
-      failure = "out of memory";
+      failure = "process " + std::to_string(rank) + ": out of memory";
     }
-  }
-  failure = MU::distributed::internal::broadcast_text(failure, comm);
-  if(!failure.empty() && rank == 0) std::cerr << "untangle_mesh_mpi: error: " << failure << "\n";
-  return failure.empty();
-}
-
-/// Whether `attempt` succeeds on every process; the first failure's message is printed by process 0.
-template <class Attempt>
-bool succeeds_everywhere(int rank, MPI_Comm comm, const Attempt& attempt)
-{
-  std::string failure;
-  try {
-    attempt();
-  } catch(const IO::Read_error& e) {
-    failure = e.what();
-  } catch(const IO::Write_error& e) {
-    failure = e.what();
-  } catch(const Usage_error& e) {
-    failure = e.what();
-  } catch(const std::invalid_argument& e) {
-    failure = e.what();
-  } catch(const std::bad_alloc&) {
-    failure = "process " + std::to_string(rank) + ": out of memory";
   }
   failure = MU::distributed::internal::first_refusal(failure, comm);
   if(!failure.empty() && rank == 0) std::cerr << "untangle_mesh_mpi: error: " << failure << "\n";
@@ -320,7 +301,7 @@ int run_parts(const Arguments& args, MPI_Comm comm)
   MPI_Comm_size(comm, &size);
   Problem problem;
   Mesh_part part;
-  if(!succeeds_everywhere(rank, comm, [&] {
+  if(!succeeds(rank, comm, true, [&] {
        if(args.fix_boundary || !args.fixed.empty())
          throw Usage_error(std::string(args.fix_boundary ? "--fix-boundary" : "--fixed") + " takes a whole mesh: "
                            "parts carry their fixed vertices as the point field 'fixed' (mesh_parts split "
@@ -345,7 +326,7 @@ int run_parts(const Arguments& args, MPI_Comm comm)
   }
   const std::vector<double> memory = peak_memory_per_process(comm);
   part.mesh = problem.mesh;
-  if(!succeeds_everywhere(rank, comm, [&] {
+  if(!succeeds(rank, comm, true, [&] {
        Mesh_untangling_tools::write_mesh_part(Mesh_untangling_tools::part_path(args.output, rank), part);
        if(rank == 0 && !args.report.empty())
          write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
@@ -364,7 +345,7 @@ int run(const Arguments& args, MPI_Comm comm)
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   Problem problem;
-  if(!succeeds_on_process_0(rank, comm, [&] { problem = read_problem(args); })) return 2;
+  if(!succeeds(rank, comm, false, [&] { problem = read_problem(args); })) return 2;
   int dimension = rank == 0 ? problem.mesh.simplex_size - 1 : 0;
   MPI_Bcast(&dimension, 1, MPI_INT, 0, comm);
   MU::Invertibility_report verdict;
@@ -377,7 +358,7 @@ int run(const Arguments& args, MPI_Comm comm)
     return 2;
   }
   const std::vector<double> memory = peak_memory_per_process(comm);
-  if(!succeeds_on_process_0(rank, comm, [&] {
+  if(!succeeds(rank, comm, false, [&] {
        IO::write_mesh_file(args.output, problem.mesh);
        if(!args.report.empty()) write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
      }))

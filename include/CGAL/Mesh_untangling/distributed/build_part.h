@@ -25,6 +25,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -293,14 +294,16 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
   share.phantom_elements = in.phantom_elements;
   mine = Part_input<d>();
   const MU::Problem_reductions over = over_processes(comm);
-  const MU::Untangling_problem<d> P = MU::make_untangling_problem<d>(share, whole.scaling, MU::default_degenerate_quality,
-                                                                     MU::Element_order::AS_GIVEN, over);
-  part.x = P.x;
+  MU::Untangling_problem<d> P = MU::make_untangling_problem<d>(share, whole.scaling, MU::default_degenerate_quality,
+                                                               MU::Element_order::AS_GIVEN, over);
+  share = MU::Untangling_input<d>();
   part.reference_orientation.assign(P.reference_orientation.begin(), P.reference_orientation.begin() + std::ptrdiff_t(mesh_m));
-  part.energy_elements = P.elements;
+  part.energy_elements = std::move(P.elements);
+  part.gradient_operators.reserve(part.energy_elements.size() * (d + 1) * d);
   for(const auto& G : P.gradient_operators)
     part.gradient_operators.insert(part.gradient_operators.end(), G.data(), G.data() + G.size());
-  part.weights = P.weights;
+  P.gradient_operators = {};
+  part.weights = std::move(P.weights);
 
   // 7. The borrowed elements' orientations, from their owners.
   std::vector<std::vector<signed char>> orientations(size);
@@ -317,6 +320,7 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
   for(int c = 0; c < d; ++c) summary.center[c] = P.center[c];
   summary.scale = P.scale;
   summary.fixed_vertices_span_space = MU::fixed_vertices_span_space(P, over, own);
+  part.x = std::move(P.x);
   return part;
 }
 
