@@ -77,8 +77,9 @@ void split(const Split_arguments& args)
   const std::vector<Mesh_part> rest_parts =
     args.rest.empty() ? std::vector<Mesh_part>() : split_mesh(rest, part_of, args.parts);
   for(int r = 0; r < args.parts; ++r) {
-    write_mesh_part(part_path(args.pattern, r), parts[r]);
-    if(!rest_parts.empty()) write_mesh_part(part_path(args.rest_pattern, r), rest_parts[r]);
+    write_mesh_part(part_path(args.pattern, r), parts[r].mesh, parts[r].vertex_id, parts[r].element_id);
+    if(!rest_parts.empty())
+      write_mesh_part(part_path(args.rest_pattern, r), rest_parts[r].mesh, rest_parts[r].vertex_id, rest_parts[r].element_id);
     std::cerr << "mesh_parts: " << part_path(args.pattern, r) << ": " << parts[r].mesh.simplices.size()
               << " elements, " << parts[r].mesh.map.size() << " vertices\n";
   }

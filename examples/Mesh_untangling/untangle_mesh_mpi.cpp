@@ -99,11 +99,11 @@ Problem read_part(const Arguments& args, int rank, Mesh_part& part)
   Problem p;
   const std::string path = Mesh_untangling_tools::part_path(args.input, rank);
   part = Mesh_untangling_tools::read_mesh_part(path);
-  p.mesh = part.mesh;
+  p.mesh = std::move(part.mesh);   // (one copy of the mesh; the part keeps its ids)
   if(!args.rest.empty()) {
     const std::string rest_path = Mesh_untangling_tools::part_path(args.rest, rank);
     const Mesh_part rest = Mesh_untangling_tools::read_mesh_part(rest_path);
-    if(rest.vertex_id != part.vertex_id || rest.mesh.simplices != part.mesh.simplices)
+    if(rest.vertex_id != part.vertex_id || rest.mesh.simplices != p.mesh.simplices)
       throw Usage_error(rest_path + ": its vertices or elements are not " + path + "'s: a rest part has its part's "
                         "vertices and elements, in the same order");
     p.rest = rest.mesh.rest.empty() ? rest.mesh.map : rest.mesh.rest;
@@ -325,9 +325,9 @@ int run_parts(const Arguments& args, MPI_Comm comm)
     return 2;
   }
   const std::vector<double> memory = peak_memory_per_process(comm);
-  part.mesh = problem.mesh;
   if(!succeeds(rank, comm, true, [&] {
-       Mesh_untangling_tools::write_mesh_part(Mesh_untangling_tools::part_path(args.output, rank), part);
+       Mesh_untangling_tools::write_mesh_part(Mesh_untangling_tools::part_path(args.output, rank), problem.mesh,
+                                              part.vertex_id, part.element_id);
        if(rank == 0 && !args.report.empty())
          write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
      }))

@@ -100,15 +100,17 @@ inline Mesh_part read_mesh_part(const std::string& path)
   return p;
 }
 
-inline void write_mesh_part(const std::string& path, const Mesh_part& p)
+/// Writes `mesh` as a part file, its vertices' and elements' global ids as the fields `global_id`.
+inline void write_mesh_part(const std::string& path, const Mesh_file& mesh, const std::vector<std::size_t>& vertex_id,
+                            const std::vector<std::size_t>& element_id)
 {
   check_part_format(path);
   const auto field = [](const std::vector<std::size_t>& ids) {
     IO::VTK_field f{global_id_field, std::vector<double>(ids.begin(), ids.end()), true};
     return IO::VTK_fields{f};
   };
-  if(has_extension(path, ".vtk")) IO::write_VTK(path, p.mesh, field(p.element_id), field(p.vertex_id));
-  else IO::write_VTU(path, p.mesh, field(p.element_id), field(p.vertex_id));
+  if(has_extension(path, ".vtk")) IO::write_VTK(path, mesh, field(element_id), field(vertex_id));
+  else IO::write_VTU(path, mesh, field(element_id), field(vertex_id));
 }
 
 /// The part of every simplex of `mesh`, `parts` parts of nearly equal size
