@@ -23,6 +23,7 @@ namespace {
 
 namespace IO = CGAL::Mesh_untangling::IO;
 using namespace Mesh_untangling_tools;
+using namespace CGAL::Mesh_untangling::IO;
 
 struct Split_arguments
 {

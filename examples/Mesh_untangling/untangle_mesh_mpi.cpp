@@ -13,7 +13,6 @@
 // message of process 0 and exit code 2; a run that does not end locally
 // invertible exits with 1, as untangle_mesh does.
 #include "memory_reuse.h"
-#include "mesh_parts.h"
 #include "thread_limit.h"
 #include "untangle_mesh_file.h"
 
@@ -21,6 +20,7 @@
 #include <CGAL/Mesh_untangling/IO/handles.h>
 #include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+#include <CGAL/Mesh_untangling/IO/mesh_parts.h>
 #include <CGAL/Mesh_untangling/version.h>
 #include <CGAL/untangle_mesh_distributed.h>
 
@@ -39,7 +39,7 @@ namespace {
 namespace MU = CGAL::Mesh_untangling;
 namespace IO = CGAL::Mesh_untangling::IO;
 using Mesh_untangling_tools::Mesh_file;
-using Mesh_untangling_tools::Mesh_part;
+using CGAL::Mesh_untangling::IO::Mesh_part;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Arguments
@@ -97,12 +97,12 @@ Problem read_problem(const Arguments& args)
 Problem read_part(const Arguments& args, int rank, Mesh_part& part)
 {
   Problem p;
-  const std::string path = Mesh_untangling_tools::part_path(args.input, rank);
-  part = Mesh_untangling_tools::read_mesh_part(path);
+  const std::string path = IO::part_path(args.input, rank);
+  part = IO::read_mesh_part(path);
   p.mesh = std::move(part.mesh);   // (one copy of the mesh; the part keeps its ids)
   if(!args.rest.empty()) {
-    const std::string rest_path = Mesh_untangling_tools::part_path(args.rest, rank);
-    const Mesh_part rest = Mesh_untangling_tools::read_mesh_part(rest_path);
+    const std::string rest_path = IO::part_path(args.rest, rank);
+    const Mesh_part rest = IO::read_mesh_part(rest_path);
     if(rest.vertex_id != part.vertex_id || rest.mesh.simplices != p.mesh.simplices)
       throw Usage_error(rest_path + ": its vertices or elements are not " + path + "'s: a rest part has its part's "
                         "vertices and elements, in the same order");
@@ -306,8 +306,8 @@ int run_parts(const Arguments& args, MPI_Comm comm)
          throw Usage_error(std::string(args.fix_boundary ? "--fix-boundary" : "--fixed") + " takes a whole mesh: "
                            "parts carry their fixed vertices as the point field 'fixed' (mesh_parts split "
                            "--fix-boundary or --fixed writes it)");
-       Mesh_untangling_tools::check_part_format(Mesh_untangling_tools::part_path(args.output, rank));
-       if(const std::string extra = Mesh_untangling_tools::part_path(args.input, size);
+       IO::check_part_format(IO::part_path(args.output, rank));
+       if(const std::string extra = IO::part_path(args.input, size);
           rank == 0 && std::ifstream(extra).good())
          throw Usage_error(extra + " exists: " + std::to_string(size + 1) + " part files or more for " +
                            std::to_string(size) + " processes (run one process per part)");
@@ -326,7 +326,7 @@ int run_parts(const Arguments& args, MPI_Comm comm)
   }
   const std::vector<double> memory = peak_memory_per_process(comm);
   if(!succeeds(rank, comm, true, [&] {
-       Mesh_untangling_tools::write_mesh_part(Mesh_untangling_tools::part_path(args.output, rank), problem.mesh,
+       IO::write_mesh_part(IO::part_path(args.output, rank), problem.mesh,
                                               part.vertex_id, part.element_id);
        if(rank == 0 && !args.report.empty())
          write_report(args.report, args, problem, size, r, verdict, solve_seconds, memory);
