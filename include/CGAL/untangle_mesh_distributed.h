@@ -81,9 +81,10 @@ Loop_settings loop_settings(const NamedParameters& np)
 /// the sliding boundary.
 ///
 /// Must be called by every process of `comm`, which must have initialized
-/// PETSc (`PetscInitialize()`, which initializes MPI).  Process 0 needs the
-/// memory of the whole problem while it builds and splits it (about as
-/// much as a serial run's set-up); the others hold their part only.
+/// PETSc (`PetscInitialize()`, which initializes MPI).  Process 0 holds the
+/// whole input while it checks and splits it; every process then builds
+/// the problem of its own part, as `untangle_simplex_soup_parts()` does (for
+/// a mesh that no process should hold whole).
 ///
 /// \tparam PointRange a random access range of `Point_2` or `Point_3` (its size is read on process 0 only)
 /// \tparam SimplexRange a range of simplices, each a random access range of 3 or 4 point indices
