@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <cstring>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -121,7 +120,6 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const std::string here = size > 1 ? "process " + std::to_string(rank) + ": " : std::string();
   MU::Untangling_input<d>& in = mine.in;
   const std::size_t n = in.positions.size(), mesh_m = in.number_of_mesh_elements();
   if(in.is_fixed.empty()) in.is_fixed.assign(n, false);
@@ -155,8 +153,8 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
       const std::size_t i = std::size_t(std::lower_bound(own_ids.begin(), own_ids.end(), r.global) - own_ids.begin());
       indices[s].push_back(i);
       const std::size_t v = local_of_own[i];
-      if(disagreement.empty() && (std::memcmp(r.position, in.positions[v].data(), sizeof r.position) != 0 ||
-                                  (r.fixed != 0) != bool(in.is_fixed[v])))
+      const bool same_place = std::equal(r.position, r.position + d, in.positions[v].data());   // (0 and -0 alike)
+      if(disagreement.empty() && (!same_place || (r.fixed != 0) != bool(in.is_fixed[v])))
         disagreement = "vertex " + std::to_string(r.global) + " is " + (in.is_fixed[v] ? "fixed " : "free ") + "at " +
                        position_text<d>(in.positions[v].data()) + " on process " + std::to_string(rank) + " and " +
                        (r.fixed ? "fixed " : "free ") + "at " + position_text<d>(r.position) + " on process " +
