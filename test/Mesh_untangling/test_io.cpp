@@ -202,6 +202,7 @@ const Reader read_vtk = [](const std::string& p) { IO::read_VTK(p); };
 const Reader read_medit = [](const std::string& p) { IO::read_MEDIT(p); };
 const Reader read_obj = [](const std::string& p) { IO::read_OBJ(p); };
 const Reader read_handles5 = [](const std::string& p) { IO::read_handles(p, 5); };
+const Reader read_stl = [](const std::string& p) { IO::read_STL(p); };
 
 #define CHECK_READ_ERROR(reader, name, content, line, phrase) \
   check_read_error(__LINE__, reader, name, content, line, phrase)
@@ -843,7 +844,7 @@ void test_handles_and_common_errors()
   CHECK_READ_ERROR(read_handles0, "none.txt", "0\n", 1, "vertex id 0 is out of range (there is no vertex)");
 
   for(const char* name :
-      {"missing.input", "missing.off", "missing.vtk", "missing.mesh", "missing.obj", "missing.txt"}) {
+      {"missing.input", "missing.off", "missing.vtk", "missing.mesh", "missing.obj", "missing.stl", "missing.txt"}) {
     const std::string path = temp_path(name);
     try {
       if(fs::path(path).extension() == ".txt")
@@ -862,12 +863,186 @@ void test_handles_and_common_errors()
     CHECK(std::string(e.what()).find("is a directory") != std::string::npos);
   }
   try {
-    IO::read_mesh_file(write_text("mesh.stl", "solid"));
-    report_failure(__LINE__, "no Read_error for .stl");
+    IO::read_mesh_file(write_text("mesh.ply", "ply"));
+    report_failure(__LINE__, "no Read_error for .ply");
   } catch(const Read_error& e) {
-    CHECK(std::string(e.what()).find("unsupported file extension '.stl' (supported: .obj .off .vtk .vtu .mesh .msh .input)")
+    CHECK(std::string(e.what()).find("unsupported file extension '.ply' (supported: .obj .off .vtk .vtu .mesh .msh .stl .input)")
           != std::string::npos);
   }
+}
+
+// ---------------------------------------------------------------------------
+// STL
+
+typedef std::array<Point, 3> Corners;
+
+// A binary STL file: an 80-byte header, the count (uint32, little-endian),
+// then per triangle a normal, three corners (float32, little-endian) and a
+// 2-byte attribute; `count` overrides the number of triangles given.
+std::string binary_stl(const std::string& header, const std::vector<Corners>& triangles, long long count = -1)
+{
+  std::string bytes = header.substr(0, 80);
+  bytes.resize(80, ' ');
+  const auto append_uint32 = [&bytes](std::uint32_t value) {
+    for(int b = 0; b < 4; ++b)
+      bytes += static_cast<char>((value >> (8 * b)) & 0xFF);
+  };
+  const auto append_float = [&](double value) {
+    const float f = static_cast<float>(value);
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    append_uint32(bits);
+  };
+  append_uint32(static_cast<std::uint32_t>(count < 0 ? static_cast<long long>(triangles.size()) : count));
+  for(const Corners& t : triangles) {
+    for(int k = 0; k < 3; ++k)
+      append_float(k == 2 ? 1 : 0);   // (the normal, ignored)
+    for(const Point& p : t)
+      for(int k = 0; k < 3; ++k)
+        append_float(p[k]);
+    bytes += std::string(2, '\0');
+  }
+  return bytes;
+}
+
+// The same triangles as an ASCII STL file (7 lines per facet after 'solid').
+std::string ascii_stl(const std::vector<Corners>& triangles)
+{
+  std::ostringstream text;
+  text << "solid test\n";
+  for(const Corners& t : triangles) {
+    text << "  facet normal 0 0 1\n    outer loop\n";
+    for(const Point& p : t)
+      text << "      vertex " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    text << "    endloop\n  endfacet\n";
+  }
+  text << "endsolid test\n";
+  return text.str();
+}
+
+// One facet of an ASCII STL with the given vertex lines.
+std::string stl_facet(const std::string& vertices)
+{
+  return "facet normal 0 0 1\nouter loop\n" + vertices + "endloop\nendfacet\n";
+}
+
+void test_stl()
+{
+  // A square of two triangles and a skew triangle on it: 9 corners, 5 vertices once welded.
+  const std::vector<Corners> triangles = {{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
+                                          {{{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}},
+                                          {{{0, 1, 0}, {1, 1, 0}, {0.5, 2, 0.25}}}};
+  const Mesh_file ascii = IO::read_STL(write_text("square.stl", ascii_stl(triangles)));
+  const Mesh_file binary = IO::read_STL(write_text("square-binary.stl", binary_stl("binary", triangles)));
+  // A binary file whose header starts with "solid" is binary all the same: its size says so.
+  const Mesh_file solid_header = IO::read_STL(write_text("solid-header.stl", binary_stl("solid square", triangles)));
+  CHECK(ascii.simplex_size == 3 && ascii.map.size() == 5 && ascii.map_dimension == 3 && ascii.rest_dimension == 0);
+  CHECK((ascii.simplices == std::vector<Simplex>{{0, 1, 2, 0}, {1, 3, 2, 0}, {2, 3, 4, 0}}));
+  CHECK((ascii.map[4] == Point{0.5, 2, 0.25}));
+  CHECK((ascii.simplex_lines == std::vector<std::size_t>{2, 9, 16}));
+  CHECK(same_mesh(ascii, binary) && same_mesh(ascii, solid_header) && binary.simplex_lines.empty());
+  CHECK(same_mesh(IO::read_mesh_file(temp_path("square.stl")), ascii));
+
+  // Keywords in any case, CRLF, a BOM, the normal unread, several solids in one mesh;
+  // corners equal as numbers are welded (-0 and 0), the first one's bits kept.
+  const std::string variants = "\xEF\xBB\xBFSOLID\r\n FACET NORMAL nan nan nan\r\n  OUTER LOOP\r\n"
+                               "   VERTEX -0 0 0\r\n   VERTEX 1 0 0\r\n   VERTEX 0 1 0\r\n  ENDLOOP\r\n ENDFACET\r\n"
+                               "ENDSOLID\r\nsolid second\n" + stl_facet("vertex 1 0 0\nvertex 0 1 0\nvertex 0 0 0\n")
+                               + "endsolid other-name\n";
+  const Mesh_file welded = IO::read_STL(write_text("variants.stl", variants));
+  CHECK(welded.map.size() == 3 && welded.map_dimension == 2 && std::signbit(welded.map[0][0]));
+  CHECK((welded.simplices == std::vector<Simplex>{{0, 1, 2, 0}, {1, 2, 0, 0}}));
+  CHECK((welded.simplex_lines == std::vector<std::size_t>{2, 11}));
+
+  // Round trips: written as ASCII STL with every bit of the doubles.
+  const Mesh_file spatial = triangle_mesh(0, 3);
+  check_round_trip(__LINE__, "spatial.stl", spatial, spatial);
+  check_round_trip(__LINE__, "upper-case.STL", spatial, spatial);
+  const Mesh_file textured = triangle_mesh(2, 2);
+  check_round_trip(__LINE__, "planar.stl", textured, map_only(textured));
+  IO::write_STL(temp_path("ascii-again.stl"), ascii);
+  CHECK(same_mesh(IO::read_STL(temp_path("ascii-again.stl")), ascii));
+  CHECK(read_text(temp_path("ascii-again.stl")).find("solid mesh\n  facet normal 0 0 1\n    outer loop\n"
+                                                     "      vertex 0 0 0\n") == 0);
+
+  // ASCII errors name the line.
+  const std::string tri = "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+  const std::string one = "solid s\n" + stl_facet(tri);   // 8 lines
+  CHECK_READ_ERROR(read_stl, "empty.stl", "", 1, "empty file: no 'solid' line");
+  CHECK_READ_ERROR(read_stl, "blank.stl", "\n  \n", 1, "empty file");
+  CHECK_READ_ERROR(read_stl, "not-stl.stl", "\nOFF\n3 1 0\n", 2, "not an STL file: expected 'solid' (ASCII STL), found 'OFF'");
+  CHECK_READ_ERROR(read_stl, "no-facet.stl", "solid s\nendsolid s\n", 2, "no facet: the solid of line 1 holds no triangle");
+  CHECK_READ_ERROR(read_stl, "no-endsolid.stl", one, 8, "truncated: no 'endsolid' for the solid of line 1 (after 1 facets)");
+  CHECK_READ_ERROR(read_stl, "cut.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", 4,
+                   "truncated: facet 0 (line 2) ends before 'endloop'");
+  CHECK_READ_ERROR(read_stl, "cut-endfacet.stl", "solid s\nfacet normal 0 0 1\nouter loop\n" + tri + "endloop\n", 7,
+                   "truncated: facet 0 (line 2) ends before 'endfacet'");
+  CHECK_READ_ERROR(read_stl, "two.stl", one + stl_facet("vertex 0 0 0\nvertex 1 0 0\n") + "endsolid\n", 9,
+                   "facet 1 has 2 vertices; STL facets are triangles (3)");
+  CHECK_READ_ERROR(read_stl, "four.stl", one + stl_facet(tri + "vertex 1 1 0\n") + "endsolid\n", 9,
+                   "facet 1 has 4 vertices; STL facets are triangles (3)");
+  CHECK_READ_ERROR(read_stl, "nan.stl", one + stl_facet("vertex 0 0 0\nvertex 1 nan 0\nvertex 0 1 0\n") + "endsolid\n",
+                   12, "y coordinate of vertex 1 of facet 1 is not finite: 'nan'");
+  CHECK_READ_ERROR(read_stl, "huge.stl", "solid s\n" + stl_facet("vertex 0 0 1e999\nvertex 1 0 0\nvertex 0 1 0\n"), 4,
+                   "z coordinate of vertex 0 of facet 0 is not finite");
+  CHECK_READ_ERROR(read_stl, "garbage.stl", "solid s\n" + stl_facet("vertex 0 0 0\nvertex 1 0 x\nvertex 0 1 0\n"), 5,
+                   "z coordinate of vertex 1 of facet 0 is not a number: 'x'");
+  CHECK_READ_ERROR(read_stl, "short-vertex.stl", "solid s\n" + stl_facet("vertex 0 0\n"), 4,
+                   "facet 0: expected 'vertex x y z', got 2 numbers");
+  CHECK_READ_ERROR(read_stl, "degenerate.stl", one + stl_facet("vertex 0 0 0\nvertex 1 0 0\nvertex -0 0 0\n") + "endsolid\n",
+                   9, "facet 1: corners 0 and 2 are the same point (0, 0, 0): a degenerate triangle");
+  CHECK_READ_ERROR(read_stl, "normal.stl", "solid s\nfacet 0 0 1\n", 2, "facet 0: expected 'facet normal nx ny nz', got 4 tokens");
+  CHECK_READ_ERROR(read_stl, "loop.stl", "solid s\nfacet normal 0 0 1\n" + tri, 3,
+                   "facet 0 (line 2): expected 'outer loop', found 'vertex' ...");
+  CHECK_READ_ERROR(read_stl, "endloop.stl", "solid s\nfacet normal 0 0 1\nouter loop\n" + tri + "endloop x\n", 7,
+                   "facet 0: unexpected 'x' after 'endloop'");
+  CHECK_READ_ERROR(read_stl, "keyword.stl", one + "face normal 0 0 1\n", 9, "expected 'facet' or 'endsolid', found 'face'");
+  CHECK_READ_ERROR(read_stl, "after.stl", one + "endsolid s\n\nextra\n", 11, "unexpected data after 'endsolid': 'extra'");
+
+  // Binary errors name the byte offset, and the triangle.
+  const std::string good = binary_stl("binary", triangles);   // 84 + 150 bytes
+  CHECK_READ_ERROR(read_stl, "truncated.stl", good.substr(0, 200), 0,
+                   "at byte 200: truncated binary STL: it ends after 2 complete triangles (the count at byte 80 "
+                   "announces 3 triangles, 84 + 50 x 3 = 234 bytes, but the file has 200)");
+  CHECK_READ_ERROR(read_stl, "count.stl", binary_stl("binary", triangles, 2), 0,
+                   "at byte 184: wrong triangle count in a binary STL: 50 bytes after the last triangle");
+  CHECK_READ_ERROR(read_stl, "big-count.stl", binary_stl("binary", triangles, 4294967295LL), 0,
+                   "at byte 234: not an ASCII STL (no 'solid' at the start), nor a binary one: truncated binary STL: it "
+                   "ends after 3 complete triangles (the count at byte 80 announces 4294967295 triangles, "
+                   "84 + 50 x 4294967295 = 214748364834 bytes");
+  CHECK_READ_ERROR(read_stl, "text-count.stl", std::string(100, 'x'), 0,
+                   "at byte 100: not an ASCII STL (no 'solid' at the start), nor a binary one: truncated binary STL");
+  CHECK_READ_ERROR(read_stl, "header-only.stl", std::string(40, '\0'), 0,
+                   "truncated binary STL: 40 bytes, fewer than the 84 of the header and the triangle count");
+  CHECK_READ_ERROR(read_stl, "zero.stl", binary_stl("solid nothing", {}), 0,
+                   "at byte 80: the triangle count is 0: the binary STL holds no triangle");
+  std::vector<Corners> bad = triangles;
+  bad[1][2][1] = std::numeric_limits<double>::infinity();
+  CHECK_READ_ERROR(read_stl, "inf.stl", binary_stl("binary", bad), 0,
+                   "at byte 174: triangle 1: y coordinate of vertex 2 is not finite");
+  bad = triangles;
+  bad[2][1] = bad[2][0];
+  CHECK_READ_ERROR(read_stl, "degenerate-binary.stl", binary_stl("binary", bad), 0,
+                   "at byte 184: triangle 2: corners 0 and 1 are the same point (0, 1, 0): a degenerate triangle");
+
+  // What STL cannot hold is not written, and no file is left.
+  CHECK_WRITE_ERROR(IO::write_STL(temp_path("tets.stl"), tet_mesh(false)), "STL stores triangles only, not tetrahedra");
+  CHECK_WRITE_ERROR(IO::write_STL(temp_path("quads.stl"), cell_mesh(4, 0, 3)), "STL stores triangles only, not quadrilaterals");
+  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("hexes.stl"), cell_mesh(8, 0, 3)), "STL stores faces only, not hexahedra");
+  Mesh_file empty;
+  empty.map_dimension = 3;
+  empty.map = {{0, 0, 0}};
+  CHECK_WRITE_ERROR(IO::write_STL(temp_path("no-triangle.stl"), empty), "no triangle to write");
+  Mesh_file no_map = triangle_mesh(3, 0);   // (a map dimension without a map, beside the rest)
+  no_map.map_dimension = 3;
+  CHECK_WRITE_ERROR(IO::write_STL(temp_path("no-map.stl"), no_map), "vertex 0 has no position: the map has 0");
+  Mesh_file coincident = spatial;
+  coincident.map[4] = coincident.map[1];
+  coincident.map[4][0] = coincident.map[4][0] == 0 ? -0.0 : coincident.map[4][0];
+  CHECK_WRITE_ERROR(IO::write_STL(temp_path("coincident.stl"), coincident),
+                    "vertices 1 and 4 are at the same point");
+  CHECK(!fs::exists(temp_path("tets.stl")) && !fs::exists(temp_path("quads.stl")) && !fs::exists(temp_path("hexes.stl"))
+        && !fs::exists(temp_path("no-triangle.stl")) && !fs::exists(temp_path("coincident.stl")));
 }
 
 bool has_temporary_files()
@@ -958,7 +1133,7 @@ void test_writer_errors()
   bad = tets;
   bad.fixed = {7};
   CHECK_WRITE_ERROR(IO::write_TLC_input(temp_path("fixed.input"), bad), "fixed vertex id 7 is out of range");
-  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("out.ply"), tets), "(supported: .obj .off .vtk .vtu .mesh .msh .input)");
+  CHECK_WRITE_ERROR(IO::write_mesh_file(temp_path("out.ply"), tets), "(supported: .obj .off .vtk .vtu .mesh .msh .stl .input)");
   CHECK(read_text(target) == before);
   CHECK(!fs::exists(temp_path("bad.input")) && !fs::exists(temp_path("tets.obj")) && !fs::exists(temp_path("out.ply")));
 
@@ -1192,6 +1367,7 @@ int main(int argc, char** argv)
   test_medit_errors();
   test_obj_errors();
   test_obj_duplicated_vertices();
+  test_stl();
   test_medit_value_messages();
   test_format_details();
   test_handles_and_common_errors();

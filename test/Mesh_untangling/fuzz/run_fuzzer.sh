@@ -6,7 +6,7 @@
 #   test      a fresh working corpus each time, so that -runs=N -seed=1 repeats
 #             exactly (ctest); prints SKIPPED and exits 77 without the target
 #   campaign  keeps FUZZ_BUILD_DIR/corpus/FORMAT across runs
-# FORMAT is obj, off, vtk, vtu, medit, gmsh, input, handles, parts or untangle (target fuzz_FORMAT).
+# FORMAT is obj, off, stl, vtk, vtu, medit, gmsh, input, handles, parts or untangle (target fuzz_FORMAT).
 # New inputs go to the build folder, never to the seed corpus in the sources;
 # crashes and mismatches are saved as FUZZ_BUILD_DIR/artifacts/FORMAT-*.
 set -euo pipefail

@@ -9,6 +9,7 @@
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
 #include <CGAL/Mesh_untangling/IO/OFF.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/STL.h>
 #include <CGAL/Mesh_untangling/IO/TLC_input.h>
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/IO/VTU.h>
@@ -22,7 +23,7 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-inline const char* supported_extensions() { return "supported: .obj .off .vtk .vtu .mesh .msh .input"; }
+inline const char* supported_extensions() { return "supported: .obj .off .vtk .vtu .mesh .msh .stl .input"; }
 
 inline std::string lowercase_extension(const std::string& path)
 {
@@ -43,8 +44,8 @@ inline std::string unsupported_extension(const std::string& path)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a mesh file, choosing the format from the extension (case-insensitive):
-/// `.obj`, `.off`, `.vtk` (legacy VTK), `.vtu` (XML VTK), `.mesh` (MEDIT), `.msh` (Gmsh)
-/// or `.input` (Du et al.);
+/// `.obj`, `.off`, `.vtk` (legacy VTK), `.vtu` (XML VTK), `.mesh` (MEDIT), `.msh` (Gmsh),
+/// `.stl` (ASCII or binary) or `.input` (Du et al.);
 /// `welding` applies to OBJ files (read_OBJ()).
 /// \throws Read_error if the extension is not one of these, or as the reader does.
 inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& welding = OBJ_welding())
@@ -62,6 +63,8 @@ inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& weld
     return read_MEDIT(path);
   if(extension == ".msh")
     return read_GMSH(path);
+  if(extension == ".stl")
+    return read_STL(path);
   if(extension == ".input")
     return read_TLC_input(path);
   throw Read_error(path, 0, internal::unsupported_extension(path));
@@ -85,6 +88,8 @@ inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
     return write_MEDIT(path, mesh);
   if(extension == ".msh")
     return write_GMSH(path, mesh);
+  if(extension == ".stl")
+    return write_STL(path, mesh);
   if(extension == ".input")
     return write_TLC_input(path, mesh);
   throw Write_error(path, internal::unsupported_extension(path));
