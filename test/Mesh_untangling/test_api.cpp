@@ -18,6 +18,7 @@
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/property_map.h>
 #include <CGAL/untangle_mesh.h>
+#include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/best_fit_plane_projection.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 #include <CGAL/Mesh_untangling/target_orientations.h>
@@ -697,6 +698,57 @@ void test_soups()
   }
 }
 
+/// A sliding boundary fitted to a target surface (parameters::target_surface):
+/// the tangled cube's boundary goes onto the boundary of a box a little
+/// larger in x and z, smaller in y and moved, given as the boundary of its
+/// tetrahedra; every face vertex ends on its face of the box, every edge
+/// vertex on its edge, every corner on its corner exactly.
+void test_target_surface()
+{
+  const int n = 3;
+  Cube c(n);
+  const std::array<double, 3> scale{1.05, 0.97, 1.03}, shift{0.04, -0.03, 0.02};
+  std::vector<std::array<double, 3>> box;
+  for(const Point_3& p : c.rest) box.push_back({p.x() * scale[0] + shift[0], p.y() * scale[1] + shift[1], p.z() * scale[2] + shift[2]});
+  const MU::Target_surface surface = MU::boundary_of_tetrahedra(box, c.cells());
+  CHECK(surface.triangles.size() == 6 * std::size_t(n * n) * 2);
+  std::vector<Point_3> points = c.mesh.points;
+  const auto r = CGAL::untangle_simplex_soup(points, c.cells(),
+    MU::parameters::sliding_boundary(true, MU::parameters::target_surface(std::cref(surface),
+    MU::parameters::rest_points(c.rest))));
+  CHECK_SUCCESS(r);
+  CHECK(r.vertices_sliding_on_surfaces == 6 * std::size_t((n - 1) * (n - 1)) && r.vertices_sliding_on_curves == 12 * std::size_t(n - 1) &&
+        r.corner_vertices_held == 8);
+  CHECK_MESSAGE(r.boundary_moved_onto_target > 0.03 && r.max_distance_to_target >= 0 && r.max_distance_to_target < 1e-12, describe(r));
+  std::size_t off_their_face = 0, corners_off = 0;
+  for(std::size_t v = 0; v < points.size(); ++v) {
+    const Point_3 &p = c.rest[v], &q = points[v];
+    int on = 0;
+    for(int i = 0; i < 3; ++i)
+      if(p[i] == 0 || p[i] == n) {
+        ++on;
+        off_their_face += std::abs(q[i] - (p[i] * scale[std::size_t(i)] + shift[std::size_t(i)])) > 1e-12;
+      }
+    if(on == 3) corners_off += !(q == Point_3(box[v][0], box[v][1], box[v][2]));
+  }
+  CHECK_MESSAGE(off_their_face == 0 && corners_off == 0, off_their_face << " coordinates off their face, " << corners_off << " corners off");
+  c.mesh.points = points;
+  CHECK(c.locally_invertible());
+
+  // refused: no sliding boundary, a triangle naming a point that is not there, a 2D map
+  std::vector<Point_3> again = c.mesh.points;
+  CHECK_INVALID(CGAL::untangle_simplex_soup(again, c.cells(), MU::parameters::target_surface(surface)),
+                "target_surface needs sliding_boundary(true)");
+  MU::Target_surface broken = surface;
+  broken.triangles[5][1] = box.size() + 2;
+  CHECK_INVALID(CGAL::untangle_simplex_soup(again, c.cells(), MU::parameters::sliding_boundary(true, MU::parameters::target_surface(broken))),
+                "target_surface: triangle 5 names point " + std::to_string(box.size() + 2));
+  std::vector<Point_2> square{Point_2(0, 0), Point_2(1, 0), Point_2(0, 1)};
+  const std::vector<std::array<int, 3>> triangle{{0, 1, 2}};
+  CHECK_INVALID(CGAL::untangle_simplex_soup(square, triangle, MU::parameters::sliding_boundary(true, MU::parameters::target_surface(surface))),
+                "a target surface is for 3D meshes");
+}
+
 /// The continuation from the rest shape: when it applies, what it reports,
 /// the budget and the callback it shares with the direct untangling.
 void test_continuation()
@@ -1022,6 +1074,7 @@ int main()
   test_named_parameters();
   test_more_parameters();
   test_tetrahedral();
+  test_target_surface();
   test_soups();
   test_continuation();
   test_degenerate_targets();

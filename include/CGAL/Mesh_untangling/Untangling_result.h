@@ -105,12 +105,16 @@ struct Untangling_result
   /// on a surface patch and on a feature curve, those held where curves
   /// meet or end (corners), the rounds of untangling and projection, and
   /// the largest distance of a sliding vertex from its target at the end
-  /// (-1 without a sliding boundary).
+  /// (-1 without a sliding boundary), and with `parameters::target_surface`
+  /// the largest distance a boundary vertex was moved to put it on the
+  /// target surface before the untangling (0 on the input's own boundary,
+  /// -1 without a sliding boundary).
   std::size_t vertices_sliding_on_surfaces = 0;
   std::size_t vertices_sliding_on_curves = 0;
   std::size_t corner_vertices_held = 0;
   std::size_t sliding_rounds = 0;
   double max_distance_to_target = -1;
+  double boundary_moved_onto_target = -1;
 
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)

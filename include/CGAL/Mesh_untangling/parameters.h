@@ -35,6 +35,7 @@ enum mesh_untangling_refinement_budget_t { mesh_untangling_refinement_budget };
 enum mesh_untangling_optimize_quality_t { mesh_untangling_optimize_quality };
 enum mesh_untangling_sliding_boundary_t { mesh_untangling_sliding_boundary };
 enum mesh_untangling_feature_angle_t { mesh_untangling_feature_angle };
+enum mesh_untangling_target_surface_t { mesh_untangling_target_surface };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
@@ -266,6 +267,26 @@ CGAL_MESH_UNTANGLING_PARAMETER(sliding_boundary, mesh_untangling_sliding_boundar
 /// (default 35).  The planes' angle, not the normals': a facet folded over
 /// in the tangled input (its normal reversed) makes no feature.
 CGAL_MESH_UNTANGLING_PARAMETER(feature_angle, mesh_untangling_feature_angle_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A `CGAL::Mesh_untangling::Target_surface`, or its `std::cref` (3D
+/// meshes, with `sliding_boundary`): the surface the boundary slides on
+/// instead of its own, as when a mesh is fitted to a CAD model's
+/// triangulation (default, or an empty one: its own).  The roles
+/// are the mesh's (its surface patches, feature curves and corners, found
+/// as without a target), the places the target's (its own patches, curves
+/// and corners, by the same `feature_angle`): the vertices of each of the
+/// mesh's patches slide on the target's patches that they are closest to,
+/// joined into one; a vertex of a feature curve slides on the target's
+/// curve closest to it (on its surface when the target has no curve); and
+/// a corner is moved to the target's corner closest to it when it is the
+/// mesh's corner closest to that one, else to the closest point of the
+/// target's curves (of its surface when it has none), and held there.
+/// Vertices fixed by the caller stay where they are.  The boundary is put
+/// on the target before the untangling starts:
+/// `Untangling_result::boundary_moved_onto_target` says how far the
+/// farthest vertex went, `max_distance_to_target` how far the farthest
+/// ends from it.
+CGAL_MESH_UNTANGLING_PARAMETER(target_surface, mesh_untangling_target_surface_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// A `CGAL::Mesh_untangling::Seam_translations`: whether the translations
 /// across seams are kept (default) or free, for the seamless overload of

@@ -6,6 +6,7 @@
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_OPTIONS_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_OPTIONS_H
 
+#include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
@@ -14,6 +15,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace CGAL {
@@ -59,6 +61,8 @@ struct Untangling_options
   // planes meet at more than feature_angle degrees.
   bool sliding_boundary = false;
   double feature_angle = 35;
+  // The surface the boundary slides on instead of its own (none: its own).
+  std::shared_ptr<const Target_surface> target_surface;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).
   std::string invalid_parameter;
 };

@@ -70,6 +70,9 @@ struct Untangling_input
   // is folded, is where the sliding boundary finds its feature edges
   // (slide_the_boundary()).  Empty otherwise.
   std::vector<Vector> rest_shape;
+  // Fixed in the run but not by the caller: the corners that a sliding
+  // boundary put on a target surface (slide_the_boundary()).  Empty: none.
+  std::vector<bool> placed;
 
   // The last `phantom_elements` elements and `phantom_vertices` positions are
   // phantoms (append_phantom_elements()): they shape the energy, but sizes,
@@ -85,6 +88,8 @@ struct Untangling_input
   std::size_t number_of_mesh_elements() const { return elements.size() - phantom_elements; }
   bool has_cells() const { return !cell_first_corner.empty(); }
   bool has_links() const { return !links.empty(); }
+  /// Whether vertex v's position goes back to the caller: a fixed vertex's stays the caller's, bit for bit.
+  bool written_back(std::size_t v) const { return !is_fixed[v] || (!placed.empty() && placed[v]); }
 };
 
 

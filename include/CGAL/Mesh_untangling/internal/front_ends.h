@@ -105,7 +105,7 @@ public:
   {
     using Point_2 = typename boost::property_traits<UVMap>::value_type;
     for(std::size_t i = 0; i < vertices_.size(); ++i)
-      if(!in.is_fixed[i])
+      if(in.written_back(i))
         put(uv, vertices_[i], Point_2(in.positions[i][0], in.positions[i][1]));
   }
 
@@ -151,7 +151,7 @@ void write_back_tetrahedral(const Untangling_input<3>& in, TetrahedralComplex& t
   auto points = get(CGAL::vertex_point, tc);
   using Point = typename boost::property_traits<decltype(points)>::value_type;
   for(std::size_t v = 0; v < in.positions.size(); ++v)
-    if(!in.is_fixed[v])
+    if(in.written_back(v))
       put(points, v, Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]));
 }
 
@@ -234,7 +234,7 @@ void write_back_soup(const Untangling_input<d>& in, PointRange& points)
   using Point = typename std::iterator_traits<typename PointRange::iterator>::value_type;
   std::size_t v = 0;
   for(auto& p : points) {
-    if(!in.is_fixed[v]) {
+    if(in.written_back(v)) {
       if constexpr(d == 2) p = Point(in.positions[v][0], in.positions[v][1]);
       else p = Point(in.positions[v][0], in.positions[v][1], in.positions[v][2]);
     }

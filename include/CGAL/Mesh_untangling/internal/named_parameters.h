@@ -21,8 +21,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <string>
 #include <limits>
+#include <memory>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -64,6 +65,13 @@ Untangling_options read_options(const NamedParameters& np)
   o.sliding_boundary = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   o.feature_angle = choose_parameter(get_parameter(np, internal_np::mesh_untangling_feature_angle), 35.);
   if(const std::string refused = feature_angle_refusal(o.feature_angle); !refused.empty()) o.invalid_parameter = refused;
+  if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_target_surface_t>()) {
+    const Target_surface& surface = get_parameter(np, internal_np::mesh_untangling_target_surface);   // (or its std::cref)
+    if(!surface.points.empty() || !surface.triangles.empty()) {
+      o.target_surface = std::make_shared<const Target_surface>(surface);
+      if(!o.sliding_boundary) o.invalid_parameter = "target_surface needs sliding_boundary(true)";
+    }
+  }
   if(o.refinement_budget == 0)
     o.invalid_parameter = "refinement_budget must be at least 1 vertex, not 0";
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_theta_t>())

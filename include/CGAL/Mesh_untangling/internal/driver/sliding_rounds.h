@@ -3,7 +3,7 @@
 //
 // A boundary that slides on the input's own (Untangling_options::sliding_boundary).
 //
-// The target is the boundary as given (sliding/Sliding_target.h): each
+// The target is the boundary as given, or a surface given instead (sliding/Sliding_target.h): each
 // boundary vertex slides on its surface patch or feature curve, corners and
 // fixed vertices stay.  The solvers move a sliding vertex in its tangent
 // plane or line (sliding/Sliding_vertices.h), which keeps a plane or a
@@ -71,26 +71,35 @@ std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>&
   }));
 }
 
-/// Makes the boundary of `in` (valid, without phantoms) slide on itself as
-/// `options` ask: the corners join the fixed vertices, every other boundary
-/// vertex slides with its tangent at its position (already on its target).
-/// The feature edges are found on the rest shape when `in` has one, where
-/// a fold of the tangled boundary makes no false feature.
-/// Throws std::invalid_argument for a seamless map.
+/// Makes the boundary of `in` (valid, without phantoms) slide as `options`
+/// ask, on itself or on `options.target_surface`: the corners join the
+/// fixed vertices, every other boundary vertex slides with its tangent at
+/// its position, put on its target (it is there already on its own
+/// boundary).  The feature edges are found on the rest shape when `in` has
+/// one, where a fold of the tangled boundary makes no false feature.
+/// Throws std::invalid_argument for a seamless map, a target surface in 2D
+/// or one that is not valid.
 template <int d>
 std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, const Untangling_options& options)
 {
   if(in.has_links()) throw std::invalid_argument("a sliding boundary is not offered for seamless parameterizations");
+  if(d != 3 && options.target_surface)
+    throw std::invalid_argument("a target surface is for 3D meshes: in 2D the boundary slides on its own polyline");
   std::vector<bool> fixed = in.is_fixed;
   const bool has_rest_shape = in.rest_shape.size() == in.positions.size();
   auto target = std::make_shared<Sliding_target<d>>(in.positions, boundary_facets<d>(in), fixed, options.feature_angle,
-                                                    has_rest_shape ? in.rest_shape : in.positions);
+                                                    has_rest_shape ? in.rest_shape : in.positions,
+                                                    options.target_surface.get());
   in.rest_shape = {};
   fixed.resize(in.positions.size(), false);
   for(std::size_t v = 0; v < fixed.size(); ++v)
     if(target->role(v) == Sliding_role::CORNER) fixed[v] = true;
   in.is_fixed = std::move(fixed);
-  target->project(in.positions, in.sliding);   // (moves nothing: the target is where they are)
+  for(const auto& corner : target->corner_places()) {
+    in.placed.resize(in.positions.size(), false);
+    in.placed[corner.first] = true;
+  }
+  target->project(in.positions, in.sliding);
   // (the problems made from `in` copy its slots; a sub-problem's drop this)
   in.sliding.onto_target = [target](std::size_t v, const Eigen::Matrix<double, d, 1>& point, Eigen::Matrix<double, d, d>* tangent) {
     const auto [closest, T] = target->closest(v, point, tangent != nullptr);
@@ -102,7 +111,8 @@ std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, c
 }
 
 /// What `target` records about the run in `r`: the vertices' roles, the
-/// rounds, and the largest distance of a sliding vertex from its target.
+/// rounds, the largest distance of a sliding vertex from its target, and
+/// how far the boundary was moved to be put on it.
 template <int d>
 void record_sliding(Sliding_target<d>& target, const Untangling_input<d>& in, int rounds, Untangling_result& r)
 {
@@ -111,6 +121,7 @@ void record_sliding(Sliding_target<d>& target, const Untangling_input<d>& in, in
   r.corner_vertices_held = target.count(Sliding_role::CORNER);
   r.sliding_rounds = std::size_t(rounds);
   r.max_distance_to_target = target.largest_distance(in.positions);
+  r.boundary_moved_onto_target = target.first_projection();
 }
 
 /// Climbs the ladder (`climb(options)` on `in`, from its positions) in

@@ -27,9 +27,20 @@
 // whole patch is searched first: a walk alone ends in a local minimum of the
 // distance where the tangled input's patch folds over itself, and left one
 // CuboidBlocks block (armadillo 216) tangled that the search untangles.
+//
+// A target surface given instead (parameters::target_surface) keeps the
+// roles and changes the places: the surface's own patches, curves and
+// corners are found as the mesh's are; a vertex of one of the mesh's
+// patches slides on the surface's patches that the vertices of its patch
+// are closest to, joined (so that a vertex near a sharp edge of the
+// surface does not end on the other side of it, and a surface cut by more
+// features than the mesh does not hold it on one piece), one of a curve on
+// the surface's curve closest to it, and a corner goes to the surface's
+// corner when each is the other's closest.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_SLIDING_SLIDING_TARGET_H
 
+#include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/internal/sliding/Sliding_vertices.h>
 
 #include <CGAL/AABB_traits.h>
@@ -47,6 +58,8 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -69,9 +82,14 @@ public:
   /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in
   /// degrees; the feature edges are those of the mesh at `shape` (the same
   /// vertices elsewhere: a valid rest shape, where the map's boundary is
-  /// folded), the patches and curves the facets and feature edges at `positions`.
+  /// folded), the patches and curves the facets and feature edges at
+  /// `positions`, or those of `surface` when one is given (3D only; throws
+  /// std::invalid_argument, naming the triangle or point, for a surface
+  /// with an index out of range, a point not finite, or no triangle of
+  /// non-zero area).
   Sliding_target(const std::vector<Vector>& positions, const std::vector<Facet>& facets,
-                 const std::vector<bool>& is_fixed, double feature_angle, const std::vector<Vector>& shape)
+                 const std::vector<bool>& is_fixed, double feature_angle, const std::vector<Vector>& shape,
+                 const Target_surface* surface = nullptr)
     : role_(positions.size(), Sliding_role::INTERIOR), place_(positions.size(), 0),
       min_cos_(std::cos(feature_angle * 3.14159265358979323846 / 180))
   {
@@ -83,6 +101,8 @@ public:
     classify(shape, ends, is_fixed);
     if constexpr(d == 3) make_patches(positions, facets, features);
     make_curves(positions, ends);
+    if constexpr(d == 3)
+      if(surface) fit_to(positions, facets, *surface, feature_angle);
   }
 
   Sliding_role role(std::size_t v) const { return role_[v]; }
@@ -94,16 +114,31 @@ public:
   /// Moves every sliding vertex of `positions` to the closest point of its
   /// patch or curve and sets its tangent projector there in `sliding`
   /// (filled on the first call); returns the largest distance moved.
+  /// The corners moved onto a target surface are put (back) in their places.
   double project(std::vector<Vector>& positions, Sliding_vertices<d>& sliding)
   {
     const bool first = sliding.empty();
-    return project_each(true, [&](std::size_t v) { return positions[v]; },
-                        [&](std::size_t v, const Vector& point, const Matrix& tangent) {
-                          positions[v] = point;
-                          if(first) sliding.add(v, role_.size(), tangent);
-                          else sliding.tangent[std::size_t(sliding.slot[v])] = tangent;
-                        });
+    double largest = 0;
+    for(const auto& [v, point] : corner_places_) {
+      largest = std::max(largest, (positions[v] - point).norm());
+      positions[v] = point;
+    }
+    largest = std::max(largest, project_each(true, [&](std::size_t v) { return positions[v]; },
+                                             [&](std::size_t v, const Vector& point, const Matrix& tangent) {
+                                               positions[v] = point;
+                                               if(first) sliding.add(v, role_.size(), tangent);
+                                               else sliding.tangent[std::size_t(sliding.slot[v])] = tangent;
+                                             }));
+    if(first_projection_ < 0) first_projection_ = largest;
+    return largest;
   }
+
+  /// The corners put on a target surface, each with its place there.
+  const std::vector<std::pair<std::size_t, Vector>>& corner_places() const { return corner_places_; }
+
+  /// The largest distance the first projection moved a vertex: 0 on the
+  /// input's own boundary, how far it was from a target surface given.
+  double first_projection() const { return std::max(first_projection_, 0.); }
 
   /// The closest point of sliding vertex v's patch or curve to `point`,
   /// and its tangent projector there; `search`: a surface vertex's whole
@@ -277,7 +312,19 @@ private:
     std::vector<std::size_t> fill(triangles_at_.begin(), triangles_at_.end() - 1);
     for(std::size_t t = 0; t < triangles_.size(); ++t)
       for(std::size_t v : triangles_[t].vertex) triangle_around_[fill[v]++] = t;
-    trees_.resize(facets.size());
+    make_trees(facets.size());
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(role_[v] != Sliding_role::SURFACE) continue;
+      if(triangles_at_[v] < triangles_at_[v + 1]) place_[v] = triangle_around_[triangles_at_[v]];
+      else role_[v] = Sliding_role::CORNER;   // (only flat facets around it: no plane to slide in)
+    }
+  }
+
+  /// The AABB tree of each patch (its id below `patches`).
+  void make_trees(std::size_t patches)
+  {
+    trees_.clear();
+    trees_.resize(patches);
     for(std::size_t t = 0; t < triangles_.size(); ++t) {
       auto& tree = trees_[triangles_[t].patch];
       if(!tree) tree = std::make_unique<Patch_tree>();
@@ -290,11 +337,6 @@ private:
         tree->tree.insert(tree->triangles.begin(), tree->triangles.end());
         tree->tree.accelerate_distance_queries();
       }
-    for(std::size_t v = 0; v < role_.size(); ++v) {
-      if(role_[v] != Sliding_role::SURFACE) continue;
-      if(triangles_at_[v] < triangles_at_[v + 1]) place_[v] = triangle_around_[triangles_at_[v]];
-      else role_[v] = Sliding_role::CORNER;   // (only flat facets around it: no plane to slide in)
-    }
   }
 
   void add_triangle(const std::vector<Vector>& p, const std::array<std::size_t, 3>& v, std::size_t patch)
@@ -432,7 +474,171 @@ private:
     return {closest_on_segment(p[at], p[at + 1], x), line_projector<d>(Vector(t.normalized()))};
   }
 
+  // --- A target surface given instead of the mesh's own boundary.
+  struct Curve_point
+  {
+    std::size_t curve = std::size_t(-1), segment = 0;
+    Vector point;
+    double squared_distance = std::numeric_limits<double>::infinity();
+  };
+
+  /// The closest point of the curves to x.
+  Curve_point closest_on_curves(const Vector& x) const
+  {
+    Curve_point best;
+    for(std::size_t c = 0; c < curves_.size(); ++c) {
+      const std::vector<Vector>& p = curves_[c].points;
+      for(std::size_t i = 0; i + 1 < p.size(); ++i) {
+        const Vector q = closest_on_segment(p[i], p[i + 1], x);
+        const double to_q = (q - x).squaredNorm();
+        if(to_q < best.squared_distance) best = {c, i, q, to_q};
+      }
+    }
+    return best;
+  }
+
+  static Vector to_vector(const std::array<double, 3>& p)
+  {
+    Vector v;
+    for(int i = 0; i < d; ++i) v[i] = p[std::size_t(i)];
+    return v;
+  }
+
+  /// The target's points as vectors and its triangles as facets; throws
+  /// for an index out of range or a point not finite.
+  static std::pair<std::vector<Vector>, std::vector<Facet>> read_surface(const Target_surface& surface)
+  {
+    std::pair<std::vector<Vector>, std::vector<Facet>> read;
+    for(std::size_t i = 0; i < surface.points.size(); ++i) {
+      read.first.push_back(to_vector(surface.points[i]));
+      if(!read.first.back().allFinite())
+        throw std::invalid_argument("target_surface: point " + std::to_string(i) + " is not finite");
+    }
+    for(std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      for(std::size_t v : surface.triangles[t])
+        if(v >= surface.points.size())
+          throw std::invalid_argument("target_surface: triangle " + std::to_string(t) + " names point " + std::to_string(v) +
+                                      " of " + std::to_string(surface.points.size()));
+      read.second.push_back({surface.triangles[t][0], surface.triangles[t][1], surface.triangles[t][2]});
+    }
+    return read;
+  }
+
+  /// Per vertex of `facets` at `positions`: half its shortest edge among them.
+  std::vector<double> reaches(const std::vector<Vector>& positions, const std::vector<Facet>& facets) const
+  {
+    std::vector<double> reach(role_.size(), std::numeric_limits<double>::infinity());
+    for(const Facet& f : facets)
+      for(std::size_t j = 0; j < f.size(); ++j) {
+        const std::size_t a = f[j], b = f[(j + 1) % f.size()];
+        const double half = (positions[a] - positions[b]).norm() / 2;
+        reach[a] = std::min(reach[a], half);
+        reach[b] = std::min(reach[b], half);
+      }
+    return reach;
+  }
+
+  /// Sends every sliding vertex and corner at `positions` (of the boundary
+  /// `facets`) to `surface`'s patches, curves and corners (see the file's
+  /// comment) and makes them the targets.  A feature of the mesh that the
+  /// target has not within half an edge of it (one that a tangled or
+  /// coarse boundary made) slides on the surface: a curve vertex, or a
+  /// corner, farther than that from the target's curves and corners.
+  void fit_to(const std::vector<Vector>& positions, const std::vector<Facet>& mesh_facets,
+              const Target_surface& surface, double feature_angle)
+  {
+    const std::vector<double> reach = reaches(positions, mesh_facets);
+    const auto [points, facets] = read_surface(surface);
+    Sliding_target target(points, facets, {}, feature_angle, points);
+    if(target.triangles_.empty()) throw std::invalid_argument("target_surface: no triangle of non-zero area");
+    Patch_tree all;   // (every triangle of the target)
+    for(std::size_t t = 0; t < target.triangles_.size(); ++t) {
+      const auto point = [&](std::size_t i) { const Vector& p = target.triangles_[t].point[i]; return Kernel::Point_3(p[0], p[1], p[2]); };
+      all.triangles.emplace_back(point(0), point(1), point(2));
+      all.triangle.push_back(t);
+    }
+    all.tree.insert(all.triangles.begin(), all.triangles.end());
+    all.tree.accelerate_distance_queries();
+    const auto closest_triangle = [&](const Vector& x) {
+      const auto closest = all.tree.closest_point_and_primitive(Kernel::Point_3(x[0], x[1], x[2]));
+      const Kernel::Point_3& q = closest.first;
+      return std::make_pair(all.triangle[std::size_t(closest.second - all.triangles.begin())], Vector(q.x(), q.y(), q.z()));
+    };
+    // The target's patches that the vertices of one of the mesh's patches
+    // are closest to are joined into one, where the vertices slide: a target
+    // cut by more features than the mesh (a coarse triangulation of a
+    // smooth shape) does not hold a patch's vertices on one of its pieces.
+    std::vector<std::size_t> joined(target.trees_.size());
+    std::iota(joined.begin(), joined.end(), std::size_t(0));
+    std::map<std::size_t, std::size_t> first_patch;   // the mesh's patch (its root facet) -> a target patch it is closest to
+    std::vector<std::size_t> place(role_.size(), 0), curve_of(role_.size(), std::size_t(-1));
+    std::vector<std::size_t> on_surface = place_corners(positions, reach, target);   // (and curve vertices far from the target's)
+    for(std::size_t v = 0; v < role_.size(); ++v) {
+      if(role_[v] == Sliding_role::SURFACE) {
+        place[v] = closest_triangle(positions[v]).first;
+        const auto [it, first] = first_patch.emplace(triangles_[place_[v]].patch, target.triangles_[place[v]].patch);
+        if(!first) joined[find(joined, target.triangles_[place[v]].patch)] = find(joined, it->second);
+      } else if(role_[v] == Sliding_role::CURVE) {   // (on the target's curve closest to it)
+        const Curve_point on = target.closest_on_curves(positions[v]);
+        if(!(on.squared_distance <= reach[v] * reach[v])) on_surface.push_back(v);
+        curve_of[v] = on.curve;
+        place[v] = on.segment;
+      }
+    }
+    for(std::size_t v : on_surface) {   // (on the patch closest to it)
+      role_[v] = Sliding_role::SURFACE;
+      place[v] = closest_triangle(positions[v]).first;
+    }
+    for(Triangle& t : target.triangles_) t.patch = find(joined, t.patch);
+    target.make_trees(joined.size());
+    triangles_ = std::move(target.triangles_);
+    trees_ = std::move(target.trees_);
+    triangles_at_ = std::move(target.triangles_at_);
+    triangle_around_ = std::move(target.triangle_around_);
+    curves_ = std::move(target.curves_);
+    place_ = std::move(place);
+    curve_of_ = std::move(curve_of);
+  }
+
+  /// Each corner of the mesh at `positions` goes to `target`'s corner
+  /// closest to it when it is the mesh's corner closest to that one, else
+  /// to the closest point of the target's curves, both within `reach` of
+  /// it; returns the corners that have neither, to slide on the surface.
+  std::vector<std::size_t> place_corners(const std::vector<Vector>& positions, const std::vector<double>& reach,
+                                         const Sliding_target& target)
+  {
+    std::vector<std::size_t> on_surface;
+    std::vector<std::size_t> corners, target_corners;
+    for(std::size_t v = 0; v < role_.size(); ++v)
+      if(role_[v] == Sliding_role::CORNER) corners.push_back(v);
+    std::vector<Vector> target_points(target.role_.size());
+    for(const Triangle& t : target.triangles_)
+      for(std::size_t i = 0; i < 3; ++i) target_points[t.vertex[i]] = t.point[i];
+    for(std::size_t k = 0; k < target.role_.size(); ++k)
+      if(target.role_[k] == Sliding_role::CORNER && target.triangles_at_[k] < target.triangles_at_[k + 1])
+        target_corners.push_back(k);
+    const auto closest = [](const Vector& x, const std::vector<std::size_t>& among, const auto& point) {
+      std::size_t best = std::size_t(-1);
+      double best_distance = std::numeric_limits<double>::infinity();
+      for(std::size_t i : among)
+        if(const double to_i = (point(i) - x).squaredNorm(); to_i < best_distance) { best_distance = to_i; best = i; }
+      return best;
+    };
+    for(std::size_t v : corners) {
+      const std::size_t k = closest(positions[v], target_corners, [&](std::size_t i) { return target_points[i]; });
+      const Curve_point on_curve = target.closest_on_curves(positions[v]);
+      if(k != std::size_t(-1) && (target_points[k] - positions[v]).norm() <= reach[v] &&
+         closest(target_points[k], corners, [&](std::size_t i) { return positions[i]; }) == v)
+        corner_places_.push_back({v, target_points[k]});
+      else if(on_curve.squared_distance <= reach[v] * reach[v]) corner_places_.push_back({v, on_curve.point});
+      else on_surface.push_back(v);
+    }
+    return on_surface;
+  }
+
   std::vector<Sliding_role> role_;
+  std::vector<std::pair<std::size_t, Vector>> corner_places_;   // (a target surface's) each corner's place on it
+  double first_projection_ = -1;
   std::vector<std::size_t> place_;      // per sliding vertex: its triangle, or its segment on its curve
   std::vector<std::size_t> curve_of_;   // per curve vertex: its curve
   std::vector<Triangle> triangles_;
