@@ -42,7 +42,7 @@ struct Loop_settings
   double theta = 0.5;
   std::size_t max_outer_iterations = 5000;
   double max_seconds = std::numeric_limits<double>::infinity();
-  double largest_epsilon = std::numeric_limits<double>::infinity();   // (MU::Eps_loop::largest_epsilon)
+  double largest_epsilon = std::numeric_limits<double>::infinity();   // (MU::largest_epsilon)
   /// asked on process 0 after every eps step; false stops the run
   std::function<bool(const Untangling_step&)> callback;
 };

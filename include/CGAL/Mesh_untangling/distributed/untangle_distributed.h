@@ -15,6 +15,7 @@
 #include <CGAL/Mesh_untangling/distributed/Distributed_eps_loop.h>
 #include <CGAL/Mesh_untangling/distributed/Ghost_exchange.h>
 #include <CGAL/Mesh_untangling/distributed/distributed_verdict.h>
+#include <CGAL/Mesh_untangling/distributed/exchange.h>
 #include <CGAL/Mesh_untangling/distributed/build_part.h>
 #include <CGAL/Mesh_untangling/distributed/split_input.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
@@ -44,16 +45,6 @@ struct Setup
   std::size_t phantom_elements = 0, phantom_vertices = 0, incomplete_phantom_stars = 0;
   Target_scaling scaling = Target_scaling::MATCH_MAP_VOLUME;
 };
-
-/// Process 0's message, on every process.
-inline std::string broadcast_text(std::string text, MPI_Comm comm)
-{
-  unsigned long size = text.size();
-  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm);
-  text.resize(size);
-  MPI_Bcast(text.data(), int(size), MPI_CHAR, 0, comm);
-  return text;
-}
 
 /// On process 0: `in` checked and protected by phantoms as `request` asks
 /// (MU::protect_boundary: where a boundary vertex is free), as the serial
@@ -130,8 +121,7 @@ Untangling_result untangle_parts(MPI_Comm comm, Part_input<d>&& mine, const Whol
   const Rank_part<d>& part = out.part;
   result.number_of_fixed_vertices = summary.fixed;
   result.degenerate_targets_replaced = summary.degenerate_targets_replaced;
-  settings.largest_epsilon =
-    d == 3 && !summary.fixed_vertices_span_space ? settings.theta / 2 : std::numeric_limits<double>::infinity();
+  settings.largest_epsilon = MU::largest_epsilon(d, settings.theta, summary.fixed_vertices_span_space);
 
   const Ghost_exchange ghosts(part, comm);
   const Invertibility_report before = check_distributed_elements(part, part.position, comm);
@@ -153,7 +143,7 @@ Untangling_result untangle_parts(MPI_Comm comm, Part_input<d>&& mine, const Whol
   result.status = MU::final_status(verdict, outcome.numerical_failure, outcome.stopped && !outcome.out_of_time,
                                    outcome.out_of_time);
   if(result.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT)
-    result.message = broadcast_text(rank == 0 ? MU::unrepairable_defects_message(verdict) : "", comm);
+    result.message = first_refusal(rank == 0 ? MU::unrepairable_defects_message(verdict) : std::string(), comm);
   result.min_scaled_det_before = outcome.min_det_before;
   result.min_scaled_det_after = outcome.min_det_after;
   result.final_energy = outcome.energy;
@@ -188,7 +178,7 @@ Untangling_result untangle_distributed(MPI_Comm comm, MU::Untangling_input<d>* i
   MPI_Bcast(&setup, int(sizeof setup), MPI_BYTE, 0, comm);
   if(!setup.valid) {
     result.status = Untangling_status::INVALID_INPUT;
-    result.message = broadcast_text(refusal, comm);
+    result.message = first_refusal(rank == 0 ? refusal : std::string(), comm);
     return result;
   }
   result.number_of_vertices = setup.vertices;

@@ -303,25 +303,10 @@ public:
   }
 
 private:
-  /// The largest eps the schedule may take on P.  When the fixed vertices do
-  /// not span the space, a map of zero volume keeps them in place (every det
-  /// J = 0), and it costs F = theta / eps from the volume term (chi(0) =
-  /// eps / 2) plus a bounded shape term, against about 1 for a valid map of
-  /// the targets' size: above eps = theta, the minimization heads for it.  The
-  /// published first eps is 0.2 |min det J|, 1.04 on a tetrahedral cube 6
-  /// tangled by a grid cell with nothing fixed (theta = 1/2), whose run then
-  /// ended with all 1,296 tetrahedra flat.  In 3D, eps stays at theta / 2 or
-  /// below there: on 14 tetrahedral cubes of 1,296 to 48,000 elements tangled
-  /// by up to two grid cells, with none, one or two vertices fixed, 11 of 42
-  /// runs untangled before (three ran past 300 s) and all 42 now, in 1.3 s at
-  /// most; with the bottom face fixed, 11 of 14 before (up to 6 s), all 14
-  /// now (up to 1.7 s).  Not in 2D: theta = 1/128 there, and eps at most
-  /// 1/256 left three of four tangled free squares (800 to 5,000 triangles,
-  /// nothing fixed) with 4 to 886 inverted triangles, where without it none
-  /// stays inverted.
+  /// The largest eps the schedule may take on P (largest_epsilon() of epsilon_schedule.h).
   double largest_epsilon(const Untangling_problem<d>& P) const
   {
-    return d == 3 && !fixed_vertices_span_space(P) ? theta_ / 2 : std::numeric_limits<double>::infinity();
+    return Mesh_untangling::internal::largest_epsilon(d, theta_, fixed_vertices_span_space(P));
   }
 
   /// Steps without fewer non-positive elements before a stage gives up:
