@@ -407,7 +407,7 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                    const py::handle& max_iterations, const py::handle& time_limit, const py::handle& threads,
                    const py::handle& progress, const py::handle& callback, bool refine,
                    const py::handle& refine_budget, bool optimize_quality, bool slide_boundary, double feature_angle,
-                   const std::string& seam_translations, const py::handle& out)
+                   const py::handle& target_surface, const std::string& seam_translations, const py::handle& out)
 {
   // Every parameter is read and checked here, before any work.
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
@@ -452,6 +452,29 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
     throw py::value_error(refused);
   if(slide_boundary && mesh.has_corner_map())
     throw py::value_error("slide_boundary=True is not offered for seamless maps");
+  if(!target_surface.is_none()) {
+    if(!slide_boundary) throw py::value_error("target_surface needs slide_boundary=True");
+    if(!py::isinstance<py::tuple>(target_surface) || py::len(target_surface) != 2)
+      throw py::type_error("target_surface must be a tuple (points, triangles)");
+    const py::tuple surface = py::reinterpret_borrow<py::tuple>(target_surface);
+    const Points points = points_array(surface[0], "target_surface points");
+    const Ids triangles = ids_array(surface[1], "target_surface triangles");
+    if(points.shape(1) != 3 || triangles.shape(1) != 3)
+      throw py::value_error("target_surface must be n x 3 points and m x 3 triangles, not " + shape_of(points) + " and " +
+                            shape_of(triangles));
+    options.target_surface.points = to_points(points);
+    const auto t = triangles.unchecked<2>();
+    for(py::ssize_t k = 0; k < t.shape(0); ++k) {
+      std::array<std::size_t, 3> triangle;
+      for(py::ssize_t i = 0; i < 3; ++i) {
+        if(t(k, i) < 0 || t(k, i) >= points.shape(0))
+          throw py::value_error("target_surface triangle " + std::to_string(k) + ": point " + std::to_string(t(k, i)) +
+                                " is not among its " + std::to_string(points.shape(0)) + " points");
+        triangle[std::size_t(i)] = std::size_t(t(k, i));
+      }
+      options.target_surface.triangles.push_back(triangle);
+    }
+  }
   if(refine && (mesh.cell_size != 0 || mesh.has_corner_map()))
     throw py::value_error("refine=True splits the edges of simplices with one position per vertex: not " +
                           std::string(mesh.has_corner_map() ? "a seamless map" : element_kind(mesh)));
@@ -794,6 +817,8 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .MU_RESULT_FIELD(sliding_rounds, "slide_boundary=True: rounds of untangling and projection")
     .MU_RESULT_FIELD(max_distance_to_target,
                      "slide_boundary=True: the largest distance of a sliding vertex from its target; -1 otherwise")
+    .MU_RESULT_FIELD(boundary_moved_onto_target,
+                     "slide_boundary=True: how far the boundary was moved onto target_surface (0 on its own); -1 otherwise")
     .MU_RESULT_FIELD(continuation_steps, "steps of the continuation that ended locally invertible")
     .MU_RESULT_FIELD(continuation_motion, "fraction of the fixed vertices' motion its locally invertible steps reached")
     .MU_RESULT_FIELD(outer_iterations, "eps steps")
@@ -889,7 +914,8 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("solver"), py::arg("phantoms"), py::arg("continuation"), py::arg("continuation_steps"),
         py::arg("max_iterations"), py::arg("time_limit"), py::arg("threads"), py::arg("progress"),
         py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("optimize_quality"),
-        py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("seam_translations"), py::arg("out"));
+        py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("target_surface"), py::arg("seam_translations"),
+        py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));

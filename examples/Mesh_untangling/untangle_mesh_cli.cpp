@@ -18,6 +18,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
 #include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
+#include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 #include <CGAL/Mesh_untangling/version.h>
@@ -60,6 +61,7 @@ struct Arguments
   bool fix_boundary = false, quiet = false, no_phantoms = false, refine = false, optimize_quality = false;
   bool slide_boundary = false;
   double feature_angle = 35;
+  std::string target_surface;   // the surface the boundary slides on instead of its own
   double theta = -1, time_limit = std::numeric_limits<double>::infinity();
   std::size_t max_iterations = MU::default_number_of_iterations;
   std::size_t continuation_steps = MU::default_continuation_steps;
@@ -509,6 +511,8 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["corner_vertices_held"] = r.corner_vertices_held;
   j["sliding_rounds"] = r.sliding_rounds;
   j["max_distance_to_target"] = optional_figure(r.max_distance_to_target);
+  j["target_surface"] = args.target_surface.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.target_surface);
+  j["boundary_moved_onto_target"] = optional_figure(r.boundary_moved_onto_target);
   nlohmann::ordered_json added = nlohmann::ordered_json::array();
   for(const MU::Added_vertex& a : run_record.added_vertices)
     added.push_back({{"vertex", a.vertex}, {"parents", {a.parents[0], a.parents[1]}}});
@@ -578,6 +582,25 @@ private:
   std::chrono::steady_clock::time_point last_draw_;
 };
 
+/// The triangles of a --target-surface file: a mesh of triangles (.off,
+/// .obj: its v lines, .stl, ...), or the boundary of a mesh of tetrahedra
+/// (as hex-meshing pipelines keep the tetrahedral mesh of their shape).
+MU::Target_surface read_target_surface(const std::string& path)
+{
+  const Mesh_file file = IO::read_mesh_file(path);
+  MU::Target_surface surface;
+  surface.points = lowercase_extension(path) == ".obj" ? file.rest : file.map;
+  if(file.simplex_size == 3) {
+    for(const auto& t : file.simplices) surface.triangles.push_back({t[0], t[1], t[2]});
+  } else if(file.simplex_size == 4) {
+    surface = MU::boundary_of_tetrahedra(surface.points, file.simplices);
+  } else {
+    throw Usage_error(path + ": a target surface is a mesh of triangles or of tetrahedra (its boundary), and this file "
+                      "holds " + (file.cell_size == 4 ? "quadrilaterals" : file.cell_size != 0 ? "other cells" : "none"));
+  }
+  return surface;
+}
+
 Run_options run_options(const Arguments& args, Progress_display* display)
 {
   Run_options options;
@@ -597,6 +620,7 @@ Run_options run_options(const Arguments& args, Progress_display* display)
   options.optimize_quality = args.optimize_quality;
   options.sliding_boundary = args.slide_boundary;
   options.feature_angle = args.feature_angle;
+  if(!args.target_surface.empty()) options.target_surface = read_target_surface(args.target_surface);
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
     options.progress_fraction = [display](double f) { return display->fraction(f); };
@@ -766,6 +790,10 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.vertices_sliding_on_surfaces, r.vertices_sliding_on_curves, r.corner_vertices_held,
                    r.max_distance_to_target, r.max_distance_to_target / std::max(1e-300, map_diagonal(mesh)),
                    r.sliding_rounds, r.sliding_rounds == 1 ? "" : "s");
+    if(!args.target_surface.empty() && r.boundary_moved_onto_target >= 0)
+      std::fprintf(stderr, "target surface %s: the boundary was moved onto it by %.3g at most (%.3g of the boundary's size)\n",
+                   args.target_surface.c_str(), r.boundary_moved_onto_target,
+                   r.boundary_moved_onto_target / std::max(1e-300, map_diagonal(mesh)));
     if(mesh.cell_size != 0)
       std::fprintf(stderr, "%s: inverted cells %zu -> %zu, min scaled Jacobian %.4g -> %.4g (vertex stars not "
                    "checked: the corner simplices of cells overlap)\n", element_kind(mesh),
@@ -1088,6 +1116,12 @@ int main(int argc, char** argv)
   app.add_option("--feature-angle", args.feature_angle, "with --slide-boundary: the angle in degrees, in (0, 90], "
                  "between two boundary facets' planes beyond which their edge is a feature (default 35)")
     ->check(CLI::Range(1e-9, 90.0))->needs(slide);
+  app.add_option("--target-surface", args.target_surface, "with --slide-boundary (3D): a triangle surface (.off, "
+                 ".obj, .stl, ...), or a tetrahedral mesh whose boundary is taken, that the boundary slides on instead of its own, as when a mesh is fitted to a CAD model: "
+                 "the vertices of a surface patch slide on the surface's patches they are closest to, those of a "
+                 "feature curve on the surface's closest curve, a corner goes to the surface's closest corner (when it "
+                 "is that corner's closest), else to its closest curve point")
+    ->check(CLI::ExistingFile)->needs(slide);
   app.add_option("-o,--output", args.output, "result (format by extension; .vtk and .vtu add per-cell det J, distortions and "
                  "inverted flags, per-vertex fixed and over-wound flags and windings); default: INPUT-untangled.EXT");
   app.add_option("--report", args.report, "JSON report with every figure");

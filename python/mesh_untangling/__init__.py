@@ -32,8 +32,8 @@ __all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on
 def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=None, solver="auto", phantoms=True,
              continuation="auto", continuation_steps=None, max_iterations=None, time_limit=None, threads=None,
              progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False,
-             slide_boundary=False, feature_angle=35.0, kind=None, rest_elements=None, seam_translations="keep",
-             out=None):
+             slide_boundary=False, feature_angle=35.0, target_surface=None, kind=None, rest_elements=None,
+             seam_translations="keep", out=None):
     """Moves the free vertices of a mesh until it is locally invertible.
 
     Returns ``(new_vertices, result)``: the map as an array of the shape of
@@ -114,6 +114,13 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         sliding vertex ends on its target: ``result.max_distance_to_target``.
     feature_angle : float in (0, 90]
         Degrees, with ``slide_boundary`` (default 35).
+    target_surface : tuple (points, triangles), optional
+        With ``slide_boundary`` (3D): an n x 3 float array and an m x 3 int
+        array, the triangle surface the boundary slides on instead of its
+        own (a CAD model's triangulation, the boundary of the shape's
+        tetrahedra); each patch, curve and corner goes to the surface's
+        closest.  ``result.boundary_moved_onto_target`` says how far the
+        boundary was moved onto it.
     kind : None or "triangles", "tetrahedra", "quadrilaterals", "hexahedra", "cells"
         What ``elements`` are; default from their columns and the vertices'
         ("cells", mixed 3D cells, is never the default).
@@ -147,7 +154,7 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
                            time_limit=time_limit, threads=threads, progress=progress, callback=callback,
                            refine=refine, refine_budget=refine_budget, optimize_quality=optimize_quality,
                            slide_boundary=slide_boundary, feature_angle=feature_angle,
-                           seam_translations=seam_translations, out=out)
+                           target_surface=target_surface, seam_translations=seam_translations, out=out)
 
 
 def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None):

@@ -69,6 +69,7 @@ class Result:
     corner_vertices_held: int
     sliding_rounds: int
     max_distance_to_target: float
+    boundary_moved_onto_target: float
     max_shape_distortion: float
     mean_shape_distortion: float
     max_volume_distortion: float
@@ -134,7 +135,8 @@ def untangle(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLi
              progress: Optional[Callable[[float], Optional[bool]]] = None,
              callback: Optional[Callable[[Step], Optional[bool]]] = None, refine: bool = False,
              refine_budget: Optional[int] = None, optimize_quality: bool = False, slide_boundary: bool = False,
-             feature_angle: float = 35.0, kind: Optional[Kind] = None,
+             feature_angle: float = 35.0, target_surface: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+             kind: Optional[Kind] = None,
              rest_elements: Optional[ArrayLike] = None, seam_translations: Literal["keep", "free"] = "keep",
              out: Optional[npt.NDArray[np.float64]] = None) -> Tuple[npt.NDArray[np.float64], Result]: ...
 def check_local_invertibility(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLike] = None,

@@ -65,35 +65,13 @@ EOF
 near_boundary() {
   /usr/bin/python3 - "$@" << 'EOF'
 import sys
-from collections import Counter
-import numpy as np
 import legacy_vtk
+from surface_distance import boundary_faces, diagonal, farthest, triangles
 lines, _, a = legacy_vtk.read(sys.argv[1])
-a, cells = np.array(a), legacy_vtk.cells(lines)
-b = np.array(legacy_vtk.points(sys.argv[2]))
-faces = [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
-count = Counter(tuple(sorted(c[v] for v in f)) for c in cells for f in faces)
-quads = [[c[v] for v in f] for c in cells for f in faces if count[tuple(sorted(c[v] for v in f))] == 1]
-tri = np.array([[q[0], q[1], q[2]] for q in quads] + [[q[0], q[2], q[3]] for q in quads])
-A, B, C = a[tri[:, 0]], a[tri[:, 1]], a[tri[:, 2]]
-def segment(p, P, Q):
-    t = np.clip(np.einsum('ij,ij->i', p - P, Q - P) / np.maximum(np.einsum('ij,ij->i', Q - P, Q - P), 1e-300), 0, 1)
-    return np.linalg.norm(P + t[:, None] * (Q - P) - p, axis=1)
-def distance(p):
-    n = np.cross(B - A, C - A)
-    nn = np.einsum('ij,ij->i', n, n)
-    ok = nn > 1e-300
-    h = np.where(ok, np.einsum('ij,ij->i', p - A, n) / np.where(ok, nn, 1), 0)
-    f = p - h[:, None] * n   # the foot on each plane
-    inside = ok.copy()
-    for P, Q in ((A, B), (B, C), (C, A)):
-        inside &= np.einsum('ij,ij->i', np.cross(Q - P, f - P), n) >= 0
-    d = np.where(inside, np.abs(h) * np.sqrt(nn), np.inf)
-    return min(d.min(), segment(p, A, B).min(), segment(p, B, C).min(), segment(p, C, A).min())
-tolerance = float(sys.argv[3]) * np.linalg.norm(a.max(axis=0) - a.min(axis=0))
-worst = max(distance(b[v]) for v in sorted({v for q in quads for v in q}))
+faces = boundary_faces(legacy_vtk.cells(lines))
+worst = farthest(legacy_vtk.points(sys.argv[2]), sorted({v for f in faces for v in f}), a, triangles(faces))
 print('farthest boundary vertex from the input boundary:', worst)
-sys.exit(0 if worst <= tolerance else 1)
+sys.exit(0 if worst <= float(sys.argv[3]) * diagonal(a) else 1)
 EOF
 }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/Added_vertex.h>
 #include <CGAL/Mesh_untangling/Element_figures.h>
+#include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/Untangling_result.h>
 #include <CGAL/Mesh_untangling/parameters.h>
 
@@ -61,6 +62,8 @@ struct Run_options
   /// boundary slides on the input's own surface patches and feature curves
   bool sliding_boundary = false;
   double feature_angle = 35;
+  /// Mesh_untangling::parameters::target_surface (empty: the input's own boundary)
+  CGAL::Mesh_untangling::Target_surface target_surface;
   /// a per-corner map (seams): Mesh_untangling::parameters::seam_translations
   CGAL::Mesh_untangling::Seam_translations seam_translations = CGAL::Mesh_untangling::Seam_translations::KEEP;
 };

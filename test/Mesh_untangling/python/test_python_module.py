@@ -413,6 +413,33 @@ class Kinds(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "feature_angle"):
             mu.untangle(vertices, triangles, slide_boundary=True, feature_angle=0)
 
+    def test_target_surface_moves_the_cube_onto_a_box(self):
+        # the tangled cube's boundary fitted to a box a little stretched and
+        # moved, given as the boundary of the box's tetrahedra: every face
+        # vertex ends on its face of the box, every corner on its corner
+        with tempfile.TemporaryDirectory() as folder:
+            make("cube", 4, 0.6, 1, os.path.join(folder, "cube.vtk"))
+            mesh = mu.read(os.path.join(folder, "cube.vtk"))
+            rest = mu.read(os.path.join(folder, "cube-rest.vtk")).vertices
+        scale, shift = np.array([1.04, 0.96, 1.02]), np.array([0.03, -0.02, 0.01])
+        box = rest * scale + shift
+        faces = np.array([[0, 1, 2], [0, 1, 3], [1, 2, 3], [2, 0, 3]])
+        listed = np.sort(mesh.elements[:, faces].reshape(-1, 3), axis=1)
+        unique, count = np.unique(listed, axis=0, return_counts=True)
+        surface = (box, unique[count == 1])
+        moved, result = mu.untangle(mesh.vertices, mesh.elements, rest=rest, slide_boundary=True, target_surface=surface)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertGreater(result.boundary_moved_onto_target, 0.02)
+        on_face = (rest == 0) | (rest == 1)
+        self.assertTrue(np.all(np.abs(moved[on_face] - box[on_face]) <= 1e-12))
+        corner = on_face.all(axis=1)
+        self.assertTrue(np.array_equal(moved[corner], box[corner]))
+        with self.assertRaisesRegex(ValueError, "target_surface needs slide_boundary=True"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=rest, target_surface=surface)
+        with self.assertRaisesRegex(ValueError, "target_surface triangle 0: point 999"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=rest, slide_boundary=True,
+                        target_surface=(box, [[0, 1, 999]]))
+
 
 class Files(unittest.TestCase):
     def setUp(self):
