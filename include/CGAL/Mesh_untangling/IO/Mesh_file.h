@@ -64,6 +64,15 @@ struct Mesh_file
   /// empty for a mesh not read from a file. Writers ignore it.
   std::vector<std::size_t> simplex_lines;
   std::vector<std::size_t> cell_lines;                ///< as `simplex_lines`, for the cells
+  /// The file's line elements (MEDIT `Edges`, Gmsh lines, VTK lines and
+  /// polylines cut into their segments), 0-based, as written: a meshing
+  /// tool's feature curves, which a sliding boundary keeps as curves.
+  std::vector<std::array<std::size_t, 2>> edges;
+  std::vector<std::size_t> edge_lines;                ///< as `simplex_lines`, for the edges
+  /// The file's point elements (MEDIT `Corners` and `RequiredVertices`, Gmsh
+  /// points, VTK vertices and polyvertices), 0-based, sorted, without
+  /// duplicates: a meshing tool's corners, which a sliding boundary keeps.
+  std::vector<std::size_t> corners;
   std::vector<std::array<double, 3>> corner_map;      ///< per-corner map (seams): texture coordinates, z = 0
   std::vector<std::array<std::size_t, 4>> simplex_corner_map;  ///< 0-based ids into `corner_map`; 4th entry unused (0)
 
