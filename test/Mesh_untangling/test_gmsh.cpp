@@ -51,7 +51,7 @@ bool same_mesh(const Mesh_file& a, const Mesh_file& b)
   return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.rest_dimension == b.rest_dimension && same_points(a.rest, b.rest)
          && a.map_dimension == b.map_dimension && same_points(a.map, b.map) && a.has_fixed == b.has_fixed
-         && a.fixed == b.fixed;
+         && a.fixed == b.fixed && a.edges == b.edges && a.corners == b.corners;
 }
 
 Mesh_file read(int line, const std::string& path)
@@ -117,8 +117,8 @@ struct Binary
 
 // ---------------------------------------------------------------------------
 // One tetrahedron 1 2 3 4 (the 4th node sparse: tag 40), listed out of order,
-// with a boundary triangle and a line, which are skipped, and the node 40
-// in the group `fixed` through a point element.
+// with a boundary triangle, which is skipped, a line (an edge), and the node
+// 40 in the group `fixed` through a point element (not a corner).
 
 const std::vector<Point> tet_points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
@@ -218,6 +218,9 @@ void test_versions()
   // (ASCII files name the line of each element, binary ones cannot)
   CHECK(read(__LINE__, temp_path("tet-22.msh")).simplex_lines == std::vector<std::size_t>{24});
   CHECK(read(__LINE__, temp_path("tet-41-binary.msh")).simplex_lines.empty());
+  const Mesh_file with_line = read(__LINE__, temp_path("tet-22.msh"));
+  CHECK((with_line.edges == std::vector<std::array<std::size_t, 2>>{{1, 3}})
+        && (with_line.edge_lines == std::vector<std::size_t>{22}) && with_line.corners.empty());
   check_round_trip(__LINE__, read(__LINE__, temp_path("tet-41.msh")), "tet-back.msh");
 }
 
@@ -326,6 +329,43 @@ void test_exact_numbers()
   const Mesh_file empty_fixed = read(__LINE__, path);
   CHECK(empty_fixed.has_fixed && empty_fixed.fixed.empty());
   check_round_trip(__LINE__, empty_fixed, "empty-fixed.msh");
+}
+
+// Lines are the edges, in the order of the file; points the corners, a set;
+// in MSH 2.2 text and 4.1 binary, and written back.
+void test_edges_and_corners()
+{
+  const std::string head = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+  const std::string nodes = "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n";   // to line 10
+  const std::vector<std::array<std::size_t, 2>> edges = {{0, 1}, {3, 2}};
+  const Mesh_file text = read(__LINE__, write_text("features-22.msh", head + nodes + "$Elements\n5\n1 1 2 0 0 1 2\n"
+                                                   "2 15 2 0 0 4\n3 4 2 0 1 1 2 3 4\n4 1 2 0 0 4 3\n5 15 2 0 0 2\n"
+                                                   "$EndElements\n"));
+  CHECK(text.simplices.size() == 1 && text.edges == edges && (text.edge_lines == std::vector<std::size_t>{13, 16})
+        && (text.corners == std::vector<std::size_t>{1, 3}));
+  check_round_trip(__LINE__, text, "features-back.msh");
+  Binary b;
+  b.text("$MeshFormat\n4.1 1 8\n").i32(1).text("\n$EndMeshFormat\n$Nodes\n").u64(1).u64(4).u64(1).u64(4);
+  b.i32(3).i32(1).i32(0).u64(4).u64(1).u64(2).u64(3).u64(4);
+  for(double v : {0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.})
+    b.f64(v);
+  b.text("\n$EndNodes\n$Elements\n").u64(3).u64(4).u64(1).u64(4);
+  b.i32(3).i32(1).i32(4).u64(1).u64(1).u64(1).u64(2).u64(3).u64(4);
+  b.i32(1).i32(1).i32(1).u64(2).u64(2).u64(1).u64(2).u64(3).u64(4).u64(3);
+  b.i32(0).i32(1).i32(15).u64(1).u64(4).u64(3);
+  b.text("\n$EndElements\n");
+  const Mesh_file binary = read(__LINE__, write_text("features-41-binary.msh", b.bytes));
+  CHECK(binary.simplices.size() == 1 && binary.edges == edges && binary.edge_lines.empty()
+        && (binary.corners == std::vector<std::size_t>{2}));
+  // a file of lines and points alone reads, as before, as no element (now with them)
+  const Mesh_file alone = read(__LINE__, write_text("lines-alone.msh", head + nodes + "$Elements\n1\n8 1 0 1 2\n$EndElements\n"));
+  CHECK(alone.simplices.empty() && alone.cells.empty() && (alone.edges == std::vector<std::array<std::size_t, 2>>{{0, 1}}));
+  CHECK_READ_ERROR("line-node.msh", head + nodes + "$Elements\n1\n8 1 0 2 99\n$EndElements\n", 13,
+                   "element 8 (line) refers to node 99, which $Nodes does not list");
+  CHECK_READ_ERROR("line-repeat.msh", head + nodes + "$Elements\n1\n8 1 0 2 2\n$EndElements\n", 13,
+                   "element 8 (line) has node 2 twice");
+  CHECK_READ_ERROR("point-node.msh", head + nodes + "$Elements\n1\n8 15 0 7\n$EndElements\n", 13,
+                   "element 8 (point) refers to node 7, which $Nodes does not list");
 }
 
 void test_errors()
@@ -461,6 +501,7 @@ int main()
   test_exact_numbers();
   test_mixed_cells();
   test_errors();
+  test_edges_and_corners();
   test::check_fixtures(__FILE__, __LINE__, MU_GMSH_FIXTURES, test_gmsh_files);
   return test::finish("test_gmsh", temp_dir);
 }

@@ -75,7 +75,7 @@ bool same_mesh(const Mesh_file& a, const Mesh_file& b)
   return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.rest_dimension == b.rest_dimension
          && same_points(a.rest, b.rest) && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
-         && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
+         && a.has_fixed == b.has_fixed && a.fixed == b.fixed && a.edges == b.edges && a.corners == b.corners;
 }
 
 // Values that a printf("%g") writer would corrupt: full mantissas, tiny,
@@ -404,7 +404,10 @@ void test_vtk_errors()
   // (the vertices of a cell are checked with its type, which names it, but the error is on the cell's line)
   CHECK_READ_ERROR(read_vtk, "hex.vtk", head + "CELLS 1 9\n8 0 1 2 3 4 0 1 2\nCELL_TYPES 1\n12\n", 12,
                    "cell 0: vertex 0 is repeated (hexahedron)");
-  CHECK_READ_ERROR(read_vtk, "heptagon.vtk", head + "CELLS 1 8\n7 0 1 2 3 4 0 1\n", 12, "cell 0 has 7 vertices");
+  // (a cell may have any number of vertices but none: a polyline or a polyvertex has that many)
+  CHECK_READ_ERROR(read_vtk, "heptagon.vtk", head + "CELLS 1 8\n7 0 1 2 3 4 0 1\nCELL_TYPES 1\n12\n", 14,
+                   "cell 0 has type 12 (hexahedron) but 7 vertices");
+  CHECK_READ_ERROR(read_vtk, "empty-cell.vtk", head + "CELLS 1 1\n0\n", 12, "cell 0 has no vertex");
   CHECK_READ_ERROR(read_vtk, "size.vtk", head + "CELLS 2 9\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n", 11,
                    "CELLS announces a size of 9");
   CHECK_READ_ERROR(read_vtk, "typecount.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n", 13,
@@ -607,6 +610,120 @@ void test_vtk_fields_read_back()
 // The fixed vertices in a VTK file: the point scalar 'fixed', or a point
 // FIELD array of that name (as ParaView may save it); 'fixed' cell data is
 // not theirs.
+// MEDIT: Edges in the order of the file, Corners and RequiredVertices as one
+// set; the errors on the element's line.
+void test_medit_edges_and_corners()
+{
+  const std::string head = "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n"
+                           "0 0 1 0\n1 1 1 0\nTetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\n";   // to line 13
+  const Mesh_file m = IO::read_MEDIT(write_text("features.mesh", head + "Edges\n3\n1 2 7\n2 5 7\n5 4 1\n"
+                                                "Corners\n2\n5\n1\nRequiredVertices\n2\n1\n3\nEnd\n"));
+  CHECK((m.edges == std::vector<std::array<std::size_t, 2>>{{0, 1}, {1, 4}, {4, 3}})
+        && (m.edge_lines == std::vector<std::size_t>{16, 17, 18}) && (m.corners == std::vector<std::size_t>{0, 2, 4})
+        && m.simplices.size() == 2);
+  // a file of edges and corners alone reads, as before, as no element (now with them)
+  const Mesh_file alone = IO::read_MEDIT(write_text("features-alone.mesh", "MeshVersionFormatted 2\nDimension 2\n"
+                                                    "Vertices\n2\n0 0 0\n1 0 0\nEdges\n1\n1 2 0\nEnd\n"));
+  CHECK(alone.simplices.empty() && alone.cells.empty()
+        && (alone.edges == std::vector<std::array<std::size_t, 2>>{{0, 1}}));
+  CHECK_READ_ERROR(read_medit, "edge-range.mesh", head + "Edges\n2\n1 2 0\n1\n6 0\n", 17,
+                   "edge 2: vertex index 6 is out of range [1, 5]");
+  CHECK_READ_ERROR(read_medit, "edge-repeat.mesh", head + "Edges\n2\n1 2 0\n3 3 0\n", 17, "edge 2: vertex 3 is repeated");
+  CHECK_READ_ERROR(read_medit, "corner-range.mesh", head + "Corners\n2\n1\n9\n", 17,
+                   "corner 2: vertex index 9 is out of range [1, 5]");
+  CHECK_READ_ERROR(read_medit, "required-range.mesh", head + "RequiredVertices\n1\n0\n", 16,
+                   "required vertex 1: vertex index 0 is out of range [1, 5]");
+  CHECK_READ_ERROR(read_medit, "edge-short.mesh", head + "Edges\n2\n1 2 0\n", 16,
+                   "the Edges block ends after 1 of 2 entries");
+}
+
+// Legacy VTK: lines and polylines (cut into segments) are the edges, vertices
+// and polyvertices the corners, wherever they are among the elements; the
+// cell data keeps the elements' values; lines alone are refused.
+void test_vtk_edges_and_corners()
+{
+  const std::string head = std::string(vtk_head) + "CELLS 6 24\n2 0 1\n4 0 1 2 3\n4 1 4 3 2\n4 1 2 3 4\n"
+                           "3 4 4 0\n1 2\nCELL_TYPES 6\n3\n10\n4\n10\n2\n1\n";   // to line 24
+  IO::VTK_fields fields;
+  const Mesh_file m = IO::read_VTK(write_text("features.vtk", head + "CELL_DATA 6\nSCALARS q double\n"
+                                              "LOOKUP_TABLE default\n9 1.5 9 2.5 9 9\n"), &fields);
+  CHECK((m.simplices == std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}})
+        && (m.simplex_lines == std::vector<std::size_t>{13, 15})
+        && (m.edges == std::vector<std::array<std::size_t, 2>>{{0, 1}, {1, 4}, {4, 3}, {3, 2}})
+        && (m.edge_lines == std::vector<std::size_t>{12, 14, 14, 14}) && (m.corners == std::vector<std::size_t>{0, 2, 4}));
+  CHECK(fields.size() == 1 && fields[0].values == std::vector<double>({1.5, 2.5}));
+  // written back: the elements, then a line per edge and a vertex per corner, their cell data 0
+  IO::write_VTK(temp_path("features-back.vtk"), m, fields);
+  IO::VTK_fields back_fields;
+  const Mesh_file back = IO::read_VTK(temp_path("features-back.vtk"), &back_fields);
+  CHECK(same_mesh(back, m) && back_fields.size() == 1 && back_fields[0].values == fields[0].values);
+  CHECK(read_text(temp_path("features-back.vtk")).find("CELL_TYPES 9\n10\n10\n3\n3\n3\n3\n1\n1\n1\n")
+        != std::string::npos);
+
+  const std::string tet = std::string(vtk_head) + "CELLS 2 ";   // then the size, the tetrahedron on line 12, cell 1 on 13
+  CHECK_READ_ERROR(read_vtk, "line-range.vtk", tet + "8\n4 0 1 2 3\n2 0 5\nCELL_TYPES 2\n10\n3\n", 13,
+                   "cell 1: vertex index 5 is out of range [0, 4] (line)");
+  CHECK_READ_ERROR(read_vtk, "line-repeat.vtk", tet + "8\n4 0 1 2 3\n2 3 3\nCELL_TYPES 2\n10\n3\n", 13,
+                   "cell 1: vertex 3 is repeated (line)");
+  CHECK_READ_ERROR(read_vtk, "polyline-repeat.vtk", tet + "10\n4 0 1 2 3\n4 0 2 2 1\nCELL_TYPES 2\n10\n4\n", 13,
+                   "cell 1: vertex 2 is repeated (polyline)");
+  CHECK_READ_ERROR(read_vtk, "vertex-range.vtk", tet + "7\n4 0 1 2 3\n1 7\nCELL_TYPES 2\n10\n1\n", 13,
+                   "cell 1: vertex index 7 is out of range [0, 4] (vertex)");
+  CHECK_READ_ERROR(read_vtk, "line-size.vtk", tet + "9\n4 0 1 2 3\n3 0 1 2\nCELL_TYPES 2\n10\n3\n", 16,
+                   "cell 1 has type 3 (line) but 3 vertices");
+  CHECK_READ_ERROR(read_vtk, "features-mixed.vtk",
+                   std::string(vtk_head) + "CELLS 3 12\n2 0 1\n4 0 1 2 3\n3 0 1 2\nCELL_TYPES 3\n3\n10\n5\n", 18,
+                   "mixed cell types: cell 2 is a triangle but cell 1 is a tetrahedron");
+  CHECK_READ_ERROR(read_vtk, "features-data.vtk", tet + "8\n4 0 1 2 3\n2 0 1\nCELL_TYPES 2\n10\n3\nCELL_DATA 1\n", 17,
+                   "CELL_DATA announces 1 values but the file has 2 cells");
+  // (as before lines and vertices were read: a file of them alone is no mesh)
+  CHECK_READ_ERROR(read_vtk, "lines-alone.vtk",
+                   std::string(vtk_head) + "CELLS 2 5\n2 0 1\n1 3\nCELL_TYPES 2\n3\n1\n", 12,
+                   "cell 0 is a line or a vertex, but the file has no triangle, quadrilateral or solid cell");
+}
+
+// Edges and corners through every writer that keeps them, and back.
+void test_edges_and_corners_round_trips()
+{
+  Mesh_file tets = tet_mesh(false);
+  tets.edges = {{0, 1}, {4, 3}, {3, 2}};
+  tets.corners = {0, 2, 4};
+  for(const char* name : {"features.mesh", "features.msh", "features.vtk", "features.vtu"})
+    check_round_trip(__LINE__, std::string("rt-") + name, tets, tets);
+  Mesh_file fixed = tets;   // Gmsh writes the fixed vertices as points too: they stay apart from the corners
+  fixed.has_fixed = true;
+  fixed.fixed = {1, 2};
+  check_round_trip(__LINE__, "rt-fixed.msh", fixed, fixed);
+  check_round_trip(__LINE__, "rt-fixed.vtk", fixed, fixed);
+  Mesh_file quads = cell_mesh(4, 0, 2);
+  quads.edges = {{0, 1}, {1, 2}};
+  quads.corners = {5};
+  for(const char* name : {"quads.mesh", "quads.msh", "quads.vtk", "quads.vtu"})
+    check_round_trip(__LINE__, std::string("rt-") + name, quads, quads);
+  // the formats that have no edges or corners ignore them
+  Mesh_file plain = quads;
+  plain.edges.clear();
+  plain.corners.clear();
+  check_round_trip(__LINE__, "rt-quads.off", quads, plain);
+
+  Mesh_file bad = tets;
+  bad.edges.push_back({1, 9});
+  CHECK_WRITE_ERROR(IO::write_MEDIT(temp_path("bad-edge.mesh"), bad), "edge 3: vertex index 9 is out of range [0, 4]");
+  bad.edges.back() = {2, 2};
+  CHECK_WRITE_ERROR(IO::write_GMSH(temp_path("bad-edge.msh"), bad), "edge 3: vertex 2 is repeated");
+  bad = tets;
+  bad.corners.push_back(5);
+  CHECK_WRITE_ERROR(IO::write_VTU(temp_path("bad-corner.vtu"), bad), "corner id 5 is out of range [0, 4]");
+  Mesh_file alone;
+  alone.map = {{0, 0, 0}, {1, 0, 0}};
+  alone.map_dimension = 2;
+  alone.edges = {{0, 1}};
+  CHECK_WRITE_ERROR(IO::write_VTK(temp_path("alone.vtk"), alone), "edges or corners but no element");
+  check_round_trip(__LINE__, "alone.mesh", alone, alone);
+  for(const char* name : {"bad-edge.mesh", "bad-edge.msh", "bad-corner.vtu", "alone.vtk"})
+    CHECK_MESSAGE(!fs::exists(temp_path(name)), name);
+}
+
 void test_vtk_fixed_flags()
 {
   const std::string cells = std::string(vtk_head) + "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n";
@@ -724,7 +841,7 @@ void test_medit_value_messages()
   CHECK_READ_ERROR(read_medit, "tet-ref2.mesh", head + "Tetrahedra\n1\n1 2 3 4 1e3\n", 11,
                    "reference of tetrahedron 1 is not an integer: '1e3'");
   CHECK_READ_ERROR(read_medit, "corner.mesh", head + "Corners\n2\n1\n1e999\n", 12,
-                   "value in Corners is not finite");
+                   "vertex index of corner 2 is not a non-negative integer: '1e999'");
   CHECK_READ_ERROR(read_medit, "y.mesh", head + "Vertices\n", 9, "second Vertices block");
   CHECK_READ_ERROR(read_medit, "y2.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0..1 0 0\n", 5,
                    "y coordinate of vertex 1 is not a number: '0..1'");
@@ -1364,6 +1481,9 @@ int main(int argc, char** argv)
   test_mixed_cells();
   test_vtk_fixed_flags();
   test_vtk_fields_read_back();
+  test_medit_edges_and_corners();
+  test_vtk_edges_and_corners();
+  test_edges_and_corners_round_trips();
   test_medit_errors();
   test_obj_errors();
   test_obj_duplicated_vertices();

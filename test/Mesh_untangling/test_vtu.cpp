@@ -49,7 +49,7 @@ bool same_mesh(const Mesh_file& a, const Mesh_file& b)
 {
   return a.simplex_size == b.simplex_size && a.simplices == b.simplices && a.cell_size == b.cell_size && a.cell_sizes == b.cell_sizes
          && a.cells == b.cells && a.map_dimension == b.map_dimension && same_points(a.map, b.map)
-         && a.has_fixed == b.has_fixed && a.fixed == b.fixed;
+         && a.has_fixed == b.has_fixed && a.fixed == b.fixed && a.edges == b.edges && a.corners == b.corners;
 }
 
 bool same_fields(const IO::VTK_fields& a, const IO::VTK_fields& b)
@@ -350,17 +350,34 @@ std::string text_of(const std::vector<T>& values)
   return out;
 }
 
-// The tets of tets() with the fixed flags and a cell field, in `e`.
-std::string tets_file(const Encoding& e)
+// tets() with a line, a polyline and a polyvertex among its cells: as read.
+Mesh_file tets_with_edges_and_corners()
+{
+  Mesh_file m = tets();
+  m.edges = {{0, 4}, {4, 3}, {3, 2}};
+  m.corners = {0, 4};
+  return m;
+}
+
+// The tets of tets() with the fixed flags and a cell field, in `e`; with
+// `features`, a line before them, a polyline between them and a polyvertex
+// after them, whose cell data (9) is not the mesh's.
+std::string tets_file(const Encoding& e, bool features = false)
 {
   const Mesh_file m = tets();
   std::vector<double> xyz;
   for(const Point& p : m.map)
     xyz.insert(xyz.end(), p.begin(), p.end());
-  const std::vector<std::int64_t> connectivity = {0, 1, 2, 3, 1, 2, 3, 4}, offsets = {4, 8};
-  const std::vector<std::uint8_t> types = {10, 10};
+  std::vector<std::int64_t> connectivity = {0, 1, 2, 3, 1, 2, 3, 4}, offsets = {4, 8};
+  std::vector<std::uint8_t> types = {10, 10};
   const std::vector<std::int32_t> fixed = {1, 0, 0, 0, 1};
-  const std::vector<float> quality = {0.5f, 1.25f};
+  std::vector<float> quality = {0.5f, 1.25f};
+  if(features) {
+    connectivity = {0, 4, 0, 1, 2, 3, 4, 3, 2, 1, 2, 3, 4, 4, 0, 4};
+    offsets = {2, 6, 9, 13, 16};
+    types = {3, 10, 4, 10, 2};
+    quality = {9, 0.5f, 9, 1.25f, 9};
+  }
   Vtu_maker f(e);
   f.open("PointData");
   f.array("Int32", "fixed", 1, text_of(fixed), bytes_of(fixed, e.big_endian));
@@ -376,7 +393,7 @@ std::string tets_file(const Encoding& e)
   f.array("Int64", "offsets", 1, text_of(offsets), bytes_of(offsets, e.big_endian));
   f.array("UInt8", "types", 1, text_of(types), bytes_of(types, e.big_endian));
   f.close("Cells");
-  return f.file(5, 2);
+  return f.file(5, types.size());
 }
 
 void test_encodings()
@@ -424,7 +441,18 @@ void test_encodings()
     // (ASCII connectivity gives each element its line: that of its first index)
     CHECK_MESSAGE(r.mesh.simplex_lines == (name == "ascii" ? std::vector<std::size_t>{22, 22}
                                                            : std::vector<std::size_t>{}), name);
+    // the same with lines and vertices: the edges and corners, the cell field the tets' only
+    const Read f = read(__LINE__, test::write_text(temp_path(name + "-features.vtu"), tets_file(encoding, true)));
+    CHECK_MESSAGE(same_mesh(f.mesh, tets_with_edges_and_corners()), name);
+    CHECK_MESSAGE(f.cells.size() == 1 && f.cells[0].values == std::vector<double>({0.5, 1.25}), name);
+    CHECK_MESSAGE(f.mesh.edge_lines == (name == "ascii" ? std::vector<std::size_t>{22, 22, 22}
+                                                        : std::vector<std::size_t>{}), name);
   }
+  // written back, the fields with 0 for the lines and vertices
+  const Read f = read(__LINE__, temp_path("appended-raw-features.vtu"));
+  IO::write_VTU(temp_path("features-back.vtu"), f.mesh, f.cells, f.points);
+  const Read back = read(__LINE__, temp_path("features-back.vtu"));
+  CHECK(same_mesh(back.mesh, f.mesh) && same_fields(back.cells, f.cells));
 }
 
 // ---------------------------------------------------------------------------
@@ -495,6 +523,29 @@ Legacy legacy_tets(std::vector<std::int32_t> types = {10, 10})
   return f;
 }
 
+// Binary lines and vertices, among the cells and in the cell data.
+void test_binary_legacy_edges_and_corners()
+{
+  Legacy f;
+  f.text("POINTS 5 float\n").values(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1});
+  f.text("CELLS 4 14\n").values(std::vector<std::int32_t>{2, 0, 4, 4, 0, 1, 2, 3, 3, 4, 3, 2, 1, 4});
+  f.text("CELL_TYPES 4\n").values(std::vector<std::int32_t>{3, 10, 4, 1});
+  Legacy bad = f;
+  f.text("CELL_DATA 4\nSCALARS q int\nLOOKUP_TABLE default\n").values(std::vector<std::int32_t>{9, 7, 9, 9});
+  const Read r = read(__LINE__, test::write_text(temp_path("binary-features.vtk"), f.bytes));
+  CHECK((r.mesh.simplices == std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}})
+        && (r.mesh.edges == std::vector<std::array<std::size_t, 2>>{{0, 4}, {4, 3}, {3, 2}})
+        && r.mesh.edge_lines.empty() && (r.mesh.corners == std::vector<std::size_t>{4}));
+  CHECK(r.cells.size() == 1 && r.cells[0].integer && r.cells[0].values == std::vector<double>({7}));
+  const std::size_t cells_data = bad.bytes.find("CELLS 4 14\n") + 11;
+  bad.bytes[cells_data + 4 * 2 + 3] = 9;   // the second vertex of the line
+  CHECK_READ_ERROR("binary-line-range.vtk", bad.bytes, 0,
+                   "at byte " + std::to_string(cells_data) + ": cell 0: vertex index 9 is out of range [0, 4] (line)");
+  bad.bytes[cells_data + 4 * 2 + 3] = 0;
+  CHECK_READ_ERROR("binary-line-repeat.vtk", bad.bytes, 0,
+                   "at byte " + std::to_string(cells_data) + ": cell 0: vertex 0 is repeated (line)");
+}
+
 void test_binary_legacy()
 {
   Legacy f = legacy_tets();
@@ -523,9 +574,9 @@ void test_binary_legacy()
                    "at byte " + std::to_string(cells_data + 20)
                      + ": cell 1: vertex index 9 is out of range [0, 4] (tetrahedron)");
   Legacy bad_size = legacy_tets();
-  bad_size.bytes[cells_data + 3] = 7;
+  bad_size.bytes[cells_data + 3] = 0;
   CHECK_READ_ERROR("binary-bad-size.vtk", bad_size.bytes, 0,
-                   "at byte " + std::to_string(cells_data) + ": cell 0 has 7 vertices");
+                   "at byte " + std::to_string(cells_data) + ": cell 0 has no vertex");
   // Binary wedges and pyramids: VTK's wedge order read into Mesh_file's, errors at the cell's offset.
   Legacy solids;
   solids.text("POINTS 6 float\n").values(std::vector<float>{0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 1, 0, 1});
@@ -617,8 +668,17 @@ void test_errors()
                    "cell 0 has type 5 (triangle) but 4 vertices");
   CHECK_READ_ERROR("offsets.vtu", head + ascii_piece(four_points, "0 1 2 3", "4 4", "10 10", 4, 2) + tail, 13,
                    "offsets are not increasing: cell 1 ends at 4, not after 4");
-  CHECK_READ_ERROR("cell-size.vtu", head + ascii_piece(four_points, "0 1 2 3 0 1", "4 6", "10 10", 4, 2) + tail, 13,
-                   "cell 1 has 2 vertices; only triangles (3)");
+  CHECK_READ_ERROR("cell-size.vtu", head + ascii_piece(four_points, "0 1 2 3 0 1", "4 6", "10 10", 4, 2) + tail, 16,
+                   "cell 1 has type 10 (tetrahedron) but 2 vertices");
+  CHECK_READ_ERROR("polyline-range.vtu", head + ascii_piece(four_points, "0 1 2 3 0 1 9", "4 7", "10 4", 4, 2) + tail,
+                   11, "cell 1: vertex index 9 is out of range [0, 3] (polyline)");
+  CHECK_READ_ERROR("line-repeat.vtu", head + ascii_piece(four_points, "0 1 2 3\n2 2", "4 6", "10 3", 4, 2) + tail,
+                   12, "cell 1: vertex 2 is repeated (line)");
+  CHECK_READ_ERROR("polyvertex-range.vtu", head + ascii_piece(four_points, "0 1 2 3 3 4", "4 6", "10 2", 4, 2) + tail,
+                   11, "cell 1: vertex index 4 is out of range [0, 3] (polyvertex)");
+  // (as before lines and vertices were read: a file of them alone is no mesh)
+  CHECK_READ_ERROR("lines-alone.vtu", head + ascii_piece(four_points, "0 1 3", "2 3", "3 1", 4, 2) + tail, 16,
+                   "cell 0 is a line or a vertex, but the file has no triangle, quadrilateral or solid cell");
   CHECK_READ_ERROR("few-points.vtu", head + ascii_piece("0 0 0 1 0 0 0 1 0", "0 1 2 3", "4", "10") + tail, 7,
                    "truncated: DataArray '' holds 9 values; expected 12");
   CHECK_READ_ERROR("many-cells.vtu", head + ascii_piece(four_points, "0 1 2 3", "4\n5", "10") + tail, 15,
@@ -692,6 +752,7 @@ int main()
   test_round_trips();
   test_encodings();
   test_binary_legacy();
+  test_binary_legacy_edges_and_corners();
   test_errors();
   test::check_fixtures(__FILE__, __LINE__, MU_VTU_FIXTURES, test_meshio_files);
   return test::finish("test_vtu", temp_dir);

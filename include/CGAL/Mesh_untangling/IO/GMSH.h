@@ -27,8 +27,13 @@ namespace IO {
 /// Mesh_file (tetrahedra, type 4, alone into `simplices`, hexahedra, type 5,
 /// whose node order is VTK's, alone into `cells`, and any other mix of them,
 /// prisms, type 6, and pyramids, type 7, into mixed cells, in the order of
-/// the file), else triangles (type 2) or quadrangles (type 3); points (type 15), lines
-/// (type 1) and the boundary faces of a volume mesh are skipped.  Node tags
+/// the file), else triangles (type 2) or quadrangles (type 3); the boundary
+/// faces of a volume mesh are skipped.  Lines (type 1) are read into `edges`
+/// (in the order of the file, their lines in `edge_lines` but in a binary
+/// file) and points (type 15) into `corners`, but for the points of the
+/// physical group `fixed`, which write_GMSH() writes to give the fixed
+/// vertices only.  A file of no element but lines or points reads as a mesh
+/// of no element.  Node tags
 /// may be sparse and in any order: the vertices are numbered as the nodes come
 /// in the file.  Sections other than `$MeshFormat`, `$PhysicalNames`,
 /// `$Entities` (MSH 4.1), `$Nodes` and `$Elements` are skipped.  The nodes of
@@ -60,8 +65,10 @@ inline Mesh_file read_GMSH(const std::string& path)
 /// a Gmsh MSH 4.1 ASCII file, with the exact shortest text of every
 /// coordinate, so that read_GMSH() gives the same bits back.  The fixed
 /// vertices (when `has_fixed`) are written as point elements (type 15) in a
-/// physical group named `fixed`, as read_GMSH() reads them.  A file read by
-/// read_GMSH() loses its lower-dimensional elements, its other physical
+/// physical group named `fixed`, as read_GMSH() reads them; the `edges` as
+/// line elements (type 1) of one curve entity and the `corners` as point
+/// elements (type 15) of a point entity each, in no physical group.  A file
+/// read by read_GMSH() loses its boundary faces, its other physical
 /// groups and entities (all elements are written in one entity, in blocks of
 /// consecutive elements of one type, so that their order is kept), its node
 /// and element tags (renumbered from 1) and any other section.
@@ -69,12 +76,12 @@ inline Mesh_file read_GMSH(const std::string& path)
 inline void write_GMSH(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
+  internal::check_edges_and_corners(path, mesh);
   const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
   std::vector<std::size_t> fixed;
   if(mesh.has_fixed) {
     fixed = mesh.fixed;
-    std::sort(fixed.begin(), fixed.end());
-    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
+    internal::sort_without_duplicates(fixed);
   }
   const internal::GMSH_mesh_elements elements = internal::GMSH_elements_of(mesh);
   internal::Atomic_output_file file(path);
@@ -82,7 +89,7 @@ inline void write_GMSH(const std::string& path, const Mesh_file& mesh)
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   if(mesh.has_fixed)
     out << "$PhysicalNames\n1\n0 1 \"fixed\"\n$EndPhysicalNames\n";
-  internal::write_GMSH_entities(out, fixed, elements, points);
+  internal::write_GMSH_entities(out, mesh, fixed, elements, points);
   internal::write_GMSH_nodes(out, elements, points);
   internal::write_GMSH_elements(out, mesh, fixed, elements);
   file.commit();

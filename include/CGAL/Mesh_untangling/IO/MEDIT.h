@@ -19,9 +19,13 @@ namespace IO {
 /// Hexahedra alone, in VTK's vertex order, into `cells`, and any other mix of
 /// Tetrahedra, Pyramids, Prisms and Hexahedra into mixed cells, the blocks
 /// in the order of the file), else its face elements (Triangles, or
-/// Quadrilaterals into `cells`); other blocks (Edges, Corners, ...) are ignored.
+/// Quadrilaterals into `cells`); its Edges into `edges` (in the order of the
+/// file, their lines in `edge_lines`) and its Corners and RequiredVertices
+/// into `corners`; other blocks (Ridges, Normals, ...) are ignored.  A file of
+/// no element but edges or corners reads as a mesh of no element.
 /// \throws Read_error if the file is missing or malformed, if a volume block
-/// is in a file of Dimension 2, or if both Triangles and Quadrilaterals make
+/// is in a file of Dimension 2, if an element, an edge or a corner refers to
+/// a vertex out of range or an element or an edge repeats one, or if both Triangles and Quadrilaterals make
 /// a mesh of no volume element (mixed faces).
 inline Mesh_file read_MEDIT(const std::string& path)
 {
@@ -30,6 +34,7 @@ inline Mesh_file read_MEDIT(const std::string& path)
     internal::MEDIT_content content = internal::read_MEDIT_content(file);
     Mesh_file mesh;
     internal::select_MEDIT_simplices(file, content, mesh);
+    internal::select_MEDIT_edges_and_corners(file, content, mesh);
     mesh.map = std::move(content.vertices);
     mesh.map_dimension = content.dimension == 2 ? 2 : internal::map_dimension_of(mesh);
     return mesh;
@@ -38,7 +43,9 @@ inline Mesh_file read_MEDIT(const std::string& path)
 
 /// \ingroup PkgMeshUntanglingIO
 /// Writes the map (the rest if there is no map) and the simplices or cells as an ASCII
-/// MEDIT file, all references 0.  Cells of mixed kinds are written in one
+/// MEDIT file, all references 0, with the `edges` as an Edges block and the
+/// `corners` as a Corners block (none when there is none; the references of
+/// the Edges read are not kept: they are written 0).  Cells of mixed kinds are written in one
 /// block per kind, Tetrahedra, Pyramids, Prisms, then Hexahedra: a mesh read
 /// from a file whose blocks come in that order reads back the same, any
 /// other order of cells comes back grouped by kind.
@@ -46,6 +53,7 @@ inline Mesh_file read_MEDIT(const std::string& path)
 inline void write_MEDIT(const std::string& path, const Mesh_file& mesh)
 {
   internal::check_for_writing(path, mesh);
+  internal::check_edges_and_corners(path, mesh);
   internal::Single_geometry geometry = internal::single_geometry(mesh);
   const int dimension = geometry.dimension == 2 && !internal::has_negative_zero_z(*geometry.points) ? 2 : 3;
   internal::Atomic_output_file file(path);

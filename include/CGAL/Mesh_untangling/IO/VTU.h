@@ -29,14 +29,17 @@ namespace IO {
 /// the rule of Mesh_file (tetrahedra, type 10, into `simplices`, hexahedra,
 /// type 12, into `cells`, and a mix of them, pyramids, type 14, and wedges,
 /// type 13, whose vertices a b c d e f become a c b d f e, into mixed
-/// cells), the points into `map`; the point array
+/// cells), the points into `map`; lines (type 3) and polylines (type 4, cut
+/// into their segments) into `edges`, vertices (type 1) and polyvertices
+/// (type 2) into `corners`, as read_VTK() reads them (their cell data
+/// dropped, a file of them alone refused); the point array
 /// `fixed` (0 or 1 per point) gives the fixed vertices, and `cell_fields` and
 /// `point_fields`, when given, receive the other arrays of one component
 /// (`integer` for the integer types).  The DataArrays may be ASCII, base64
 /// (`binary`) or appended (raw or base64), with headers of type UInt32 or
 /// UInt64, in either byte order, and zlib-compressed (vtkZLibDataCompressor).
 /// Errors name the line of the tag, and in binary data the byte or base64
-/// character; `simplex_lines` and `cell_lines` are filled when the
+/// character; `simplex_lines`, `cell_lines` and `edge_lines` are filled when the
 /// connectivity is ASCII (the line of the cell's first vertex index).
 /// \throws Read_error if the file is missing or malformed, not an
 /// UnstructuredGrid, of more than one Piece, compressed with LZ4 or LZMA, if
@@ -52,11 +55,12 @@ inline Mesh_file read_VTU(const std::string& path, VTK_fields* cell_fields = nul
     const internal::VTU_decoder in{path, bytes, doc};
     Mesh_file mesh;
     internal::read_VTU_points(in, mesh);
-    internal::read_VTU_cells(in, mesh);
+    const std::vector<std::size_t> edges_and_corners = internal::read_VTU_cells(in, mesh);
     if(cell_fields) cell_fields->clear();
     if(point_fields) point_fields->clear();
     internal::read_VTU_data(in, doc.point_data, true, mesh.map.size(), mesh, point_fields);
     internal::read_VTU_data(in, doc.cell_data, false, doc.number_of_cells, mesh, cell_fields);
+    if(cell_fields) internal::drop_VTK_edge_and_corner_values(*cell_fields, edges_and_corners);
     mesh.map_dimension = internal::map_dimension_of(mesh);
     return mesh;
   });
@@ -68,14 +72,15 @@ inline Mesh_file read_VTU(const std::string& path, VTK_fields* cell_fields = nul
 /// read_VTU() reads back to the same bits:
 /// raw appended data in the machine's byte order (declared), UInt64 headers,
 /// no compression; Float64 points, Int64 connectivity and offsets, UInt8
-/// types.  The fields and the point field `fixed` are written as write_VTK()
-/// writes them (Int32 for `integer` fields, else Float64).
+/// types.  The fields, the point field `fixed`, the edges and the corners are
+/// written as write_VTK() writes them (Int32 for `integer` fields, else Float64).
 /// \throws Write_error if the mesh or a field is inconsistent, or the file
 /// cannot be written.
 inline void write_VTU(const std::string& path, const Mesh_file& mesh, const VTK_fields& cell_fields = {},
                       const VTK_fields& point_fields = {})
 {
   const internal::VTK_output output = internal::checked_VTK_output(path, mesh, cell_fields, point_fields);
+  internal::check_VTK_edges_and_corners(path, mesh);
   internal::Atomic_output_file file(path);
   internal::write_VTU_file(file.stream(), mesh, output.points, cell_fields, output.point_fields);
   file.commit();

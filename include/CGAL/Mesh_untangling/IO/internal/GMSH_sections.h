@@ -9,6 +9,7 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/internal/GMSH_stream.h>
+#include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
 #include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
@@ -28,8 +29,8 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-// The elements a mesh can be made of (solid cells of any kind mix); the
-// others are read only to be skipped (points, lines) or refused.
+// The elements a mesh can be made of (solid cells of any kind mix); points
+// and lines are its corners and edges, the other types are refused.
 enum GMSH_kind { GMSH_TRIANGLES, GMSH_QUADRANGLES, GMSH_SOLIDS, GMSH_LOWER_DIMENSION };
 
 struct GMSH_type
@@ -66,7 +67,7 @@ inline GMSH_type GMSH_type_of(long long type)
 inline std::string GMSH_refusal(long long type)
 {
   const std::string only = " (only linear triangles, quadrangles, tetrahedra, pyramids, prisms and hexahedra, "
-                           "and points and lines, which are skipped)";
+                           "and points and lines, read as corners and edges)";
   static const char* const second_order[] = {
     "3-node second order line", "6-node second order triangle", "9-node second order quadrangle",
     "10-node second order tetrahedron", "27-node second order hexahedron", "18-node second order prism",
@@ -102,6 +103,9 @@ struct GMSH_content
   std::set<GMSH_key> fixed_groups;                   // the physical groups named "fixed"
   std::map<GMSH_key, std::vector<long long>> entity_groups;   // MSH 4.1: an entity's physical tags
   std::vector<std::size_t> fixed;                    // ids, in any order, repeated
+  std::vector<std::array<std::size_t, 2>> edges;     // the lines, as Mesh_file's
+  std::vector<std::size_t> edge_lines;               // empty in a binary file
+  std::vector<std::size_t> corners;                  // the points not in the group `fixed`, in any order, repeated
 };
 
 inline std::string GMSH_element_name(std::size_t tag) { return "element " + std::to_string(tag); }
@@ -282,6 +286,20 @@ inline void read_GMSH_nodes_4(GMSH_stream& stream, GMSH_content& content)
                                  + std::to_string(total));
 }
 
+// Lines are edges.  Points are corners, but those of the group `fixed`: as
+// write_GMSH() writes the fixed vertices, they say only that.
+inline void add_GMSH_edge_or_corner(const GMSH_stream& stream, GMSH_content& content, const GMSH_type& type,
+                                    const std::array<std::size_t, 8>& ids, const GMSH_place& at, bool fixed)
+{
+  if(type.nodes == 2) {
+    content.edges.push_back({ids[0], ids[1]});
+    if(!stream.binary())
+      content.edge_lines.push_back(at.line);
+  } else if(!fixed) {
+    content.corners.push_back(ids[0]);
+  }
+}
+
 // Reads the node tags of one element (`read_tag` reads one) and files the
 // element: under its kind when it may be of the mesh, and its vertices
 // as fixed when it is in the group `fixed`.
@@ -307,7 +325,7 @@ void read_GMSH_element(GMSH_stream& stream, GMSH_content& content, const GMSH_ty
   if(fixed)
     content.fixed.insert(content.fixed.end(), ids.begin(), ids.begin() + type.nodes);
   if(type.kind == GMSH_LOWER_DIMENSION)
-    return;
+    return add_GMSH_edge_or_corner(stream, content, type, ids, at, fixed);
   GMSH_elements& elements = content.elements[type.kind];
   if(elements.ids.empty()) {
     elements.first_tag = tag;
@@ -511,9 +529,12 @@ inline void select_GMSH_elements(const GMSH_stream& stream, GMSH_content& conten
     mesh.simplex_lines = std::move(triangles.lines);
   }
   mesh.has_fixed = content.has_fixed_group;
-  std::sort(content.fixed.begin(), content.fixed.end());
-  content.fixed.erase(std::unique(content.fixed.begin(), content.fixed.end()), content.fixed.end());
+  sort_without_duplicates(content.fixed);
   mesh.fixed = std::move(content.fixed);
+  mesh.edges = std::move(content.edges);
+  mesh.edge_lines = std::move(content.edge_lines);
+  sort_without_duplicates(content.corners);
+  mesh.corners = std::move(content.corners);
 }
 
 } // namespace internal

@@ -64,9 +64,34 @@ inline std::vector<std::size_t> GMSH_block_ends(const Mesh_file& mesh, std::size
   return ends;
 }
 
+// One point entity per vertex of `ids`, tagged from `first_tag`, in the
+// physical group `fixed` (tag 1) or in none.
+inline void write_GMSH_point_entities(std::ostream& out, const std::vector<std::size_t>& ids, std::size_t first_tag,
+                                      bool fixed, const std::vector<std::array<double, 3>>& points)
+{
+  for(std::size_t i = 0; i < ids.size(); ++i) {
+    write_number(out, first_tag + i);
+    out << ' ';
+    write_point(out, points[ids[i]], 3);
+    out << (fixed ? " 1 1\n" : " 0\n");
+  }
+}
+
+// A curve or a surface or a volume entity, tag 1, in no physical group.
+inline void write_GMSH_boxed_entity(std::ostream& out, const std::array<double, 3>& low,
+                                    const std::array<double, 3>& high)
+{
+  out << "1 ";
+  write_point(out, low, 3);
+  out << ' ';
+  write_point(out, high, 3);
+  out << " 0 0\n";
+}
+
 // One point entity per fixed vertex, in the physical group `fixed` (tag 1),
-// then the one entity of the mesh, boxed by its points.
-inline void write_GMSH_entities(std::ostream& out, const std::vector<std::size_t>& fixed,
+// and one per corner, then the curve entity of the edges, if any, and the
+// one entity of the mesh, both boxed by the points.
+inline void write_GMSH_entities(std::ostream& out, const Mesh_file& mesh, const std::vector<std::size_t>& fixed,
                                 const GMSH_mesh_elements& elements, const std::vector<std::array<double, 3>>& points)
 {
   std::array<double, 3> low = {0, 0, 0}, high = {0, 0, 0};
@@ -78,19 +103,14 @@ inline void write_GMSH_entities(std::ostream& out, const std::vector<std::size_t
       high[c] = (std::max)(high[c], p[c]);
     }
   out << "$Entities\n";
-  write_number(out, fixed.size());
-  out << " 0 " << (elements.dimension == 2 ? "1 0\n" : "0 1\n");
-  for(std::size_t i = 0; i < fixed.size(); ++i) {
-    write_number(out, i + 1);
-    out << ' ';
-    write_point(out, points[fixed[i]], 3);
-    out << " 1 1\n";
-  }
-  out << "1 ";
-  write_point(out, low, 3);
-  out << ' ';
-  write_point(out, high, 3);
-  out << " 0 0\n$EndEntities\n";
+  write_number(out, fixed.size() + mesh.corners.size());
+  out << (mesh.edges.empty() ? " 0 " : " 1 ") << (elements.dimension == 2 ? "1 0\n" : "0 1\n");
+  write_GMSH_point_entities(out, fixed, 1, true, points);
+  write_GMSH_point_entities(out, mesh.corners, fixed.size() + 1, false, points);
+  if(!mesh.edges.empty())
+    write_GMSH_boxed_entity(out, low, high);
+  write_GMSH_boxed_entity(out, low, high);
+  out << "$EndEntities\n";
 }
 
 // All nodes in the mesh's entity, tagged 1 to n in the order of the ids.
@@ -121,14 +141,48 @@ inline void write_GMSH_nodes(std::ostream& out, const GMSH_mesh_elements& elemen
   out << "$EndNodes\n";
 }
 
-// The mesh's elements, a block per run of one type, then one point element
-// per fixed vertex.
+// A point element per vertex of `ids`, each in its entity, tagged from
+// `first_entity` as write_GMSH_point_entities() writes them; `tag` is the last element's.
+inline void write_GMSH_point_elements(std::ostream& out, const std::vector<std::size_t>& ids,
+                                      std::size_t first_entity, std::size_t& tag)
+{
+  for(std::size_t i = 0; i < ids.size(); ++i) {
+    out << "0 ";
+    write_number(out, first_entity + i);
+    out << " 15 1\n";
+    write_number(out, ++tag);
+    out << ' ';
+    write_number(out, ids[i] + 1);
+    out << '\n';
+  }
+}
+
+// The edges, line elements of the curve entity, in one block.
+inline void write_GMSH_edges(std::ostream& out, const std::vector<std::array<std::size_t, 2>>& edges, std::size_t& tag)
+{
+  if(edges.empty())
+    return;
+  out << "1 1 1 ";
+  write_number(out, edges.size());
+  out << '\n';
+  for(const std::array<std::size_t, 2>& e : edges) {
+    write_number(out, ++tag);
+    for(std::size_t id : e) {
+      out << ' ';
+      write_number(out, id + 1);
+    }
+    out << '\n';
+  }
+}
+
+// The mesh's elements, a block per run of one type, then the edges, one point
+// element per fixed vertex and one per corner.
 inline void write_GMSH_elements(std::ostream& out, const Mesh_file& mesh, const std::vector<std::size_t>& fixed,
                                 const GMSH_mesh_elements& elements)
 {
   const std::vector<std::size_t> ends = GMSH_block_ends(mesh, elements.count);
-  const std::size_t blocks = ends.size() + fixed.size();
-  const std::size_t count = elements.count + fixed.size();
+  const std::size_t blocks = ends.size() + (mesh.edges.empty() ? 0 : 1) + fixed.size() + mesh.corners.size();
+  const std::size_t count = elements.count + mesh.edges.size() + fixed.size() + mesh.corners.size();
   out << "$Elements\n";
   write_number(out, blocks);
   out << ' ';
@@ -152,15 +206,9 @@ inline void write_GMSH_elements(std::ostream& out, const Mesh_file& mesh, const 
       out << '\n';
     }
   }
-  for(std::size_t i = 0; i < fixed.size(); ++i) {
-    out << "0 ";
-    write_number(out, i + 1);
-    out << " 15 1\n";
-    write_number(out, ++tag);
-    out << ' ';
-    write_number(out, fixed[i] + 1);
-    out << '\n';
-  }
+  write_GMSH_edges(out, mesh.edges, tag);
+  write_GMSH_point_elements(out, fixed, 1, tag);
+  write_GMSH_point_elements(out, mesh.corners, fixed.size() + 1, tag);
   out << "$EndElements\n";
 }
 

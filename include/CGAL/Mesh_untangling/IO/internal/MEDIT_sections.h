@@ -46,7 +46,20 @@ struct MEDIT_content
   MEDIT_elements triangles;
   MEDIT_elements quadrilaterals;
   std::array<MEDIT_elements, 4> solids;         // Tetrahedra, Pyramids, Prisms, Hexahedra: as solid_cell_kinds()
+  MEDIT_elements edges;
+  std::array<MEDIT_elements, 2> corners;        // Corners, RequiredVertices: as MEDIT_corner_blocks()
 };
+
+// The blocks of point elements, a vertex index each and no reference: the
+// corners of Mesh_file.
+struct MEDIT_corner_block { const char* keyword; const char* name; };
+
+inline const std::array<MEDIT_corner_block, 2>& MEDIT_corner_blocks()
+{
+  static const std::array<MEDIT_corner_block, 2> blocks = {{{"Corners", "corner"},
+                                                             {"RequiredVertices", "required vertex"}}};
+  return blocks;
+}
 
 // A word where a number should be means the block has fewer entries than
 // its count announced: say so instead of "not a number".
@@ -131,8 +144,10 @@ inline void read_MEDIT_vertices(Text_file& file, const Token& keyword, MEDIT_con
   }
 }
 
-// `k` vertices per element, each a `name` (in messages).
-inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, const char* name, MEDIT_elements& block)
+// `k` vertices per element, each a `name` (in messages), and a reference
+// but in the blocks of point elements (`with_reference` false).
+inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, const char* name, MEDIT_elements& block,
+                                bool with_reference = true)
 {
   if(block.header_line != 0)
     file.fail(keyword.line, "second " + std::string(keyword.text) + " block (the first is at line "
@@ -150,7 +165,8 @@ inline void read_MEDIT_elements(Text_file& file, const Token& keyword, int k, co
       first_line = c == 0 ? line : first_line;
     }
     block.lines.push_back(first_line);
-    skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
+    if(with_reference)
+      skip_MEDIT_reference(file, keyword, i, count, [&] { return "reference of " + what(); });
     block.ids.push_back(ids);
   }
 }
@@ -170,8 +186,7 @@ inline std::size_t MEDIT_ignored_width(std::string_view keyword, int dimension)
 {
   struct Entry { const char* keyword; std::size_t width; };
   const std::size_t d = static_cast<std::size_t>(dimension);
-  const Entry table[] = {{"Edges", 3}, {"Corners", 1}, {"Ridges", 1}, {"RequiredVertices", 1},
-                         {"RequiredEdges", 1}, {"RequiredTriangles", 1}, {"RequiredQuadrilaterals", 1},
+  const Entry table[] = {{"Ridges", 1}, {"RequiredEdges", 1}, {"RequiredTriangles", 1}, {"RequiredQuadrilaterals", 1},
                          {"RequiredTetrahedra", 1}, {"Normals", d}, {"Tangents", d}, {"NormalAtVertices", 2},
                          {"TangentAtVertices", 2}, {"NormalAtTriangleVertices", 3}};
   for(const Entry& e : table)
@@ -208,6 +223,11 @@ inline void read_MEDIT_block(Text_file& file, const Token& keyword, MEDIT_conten
     return read_MEDIT_elements(file, keyword, 3, simplex_name(3), content.triangles);
   if(same_keyword(keyword.text, "Quadrilaterals"))
     return read_MEDIT_elements(file, keyword, 4, cell_name(4), content.quadrilaterals);
+  if(same_keyword(keyword.text, "Edges"))
+    return read_MEDIT_elements(file, keyword, 2, "edge", content.edges);
+  for(std::size_t k = 0; k < content.corners.size(); ++k)
+    if(same_keyword(keyword.text, MEDIT_corner_blocks()[k].keyword))
+      return read_MEDIT_elements(file, keyword, 1, MEDIT_corner_blocks()[k].name, content.corners[k], false);
   for(std::size_t k = 0; k < content.solids.size(); ++k) {
     const Solid_cell_kind& kind = solid_cell_kinds()[k];
     if(!same_keyword(keyword.text, kind.MEDIT_section))
@@ -243,6 +263,18 @@ inline MEDIT_content read_MEDIT_content(Text_file& file)
   return content;
 }
 
+// Element i of `block` (`k` vertices, each a `name`), 0-based; a vertex out
+// of range or repeated is an error on its line.
+inline std::array<std::size_t, 8> checked_MEDIT_element(const Text_file& file, const MEDIT_content& content,
+                                                        const MEDIT_elements& block, std::size_t i, int k,
+                                                        const char* name)
+{
+  const std::string defect = simplex_defect(block.ids[i], k, content.vertices.size(), 1);
+  if(!defect.empty())
+    file.fail(block.lines[i], std::string(name) + " " + std::to_string(i + 1) + ": " + defect);
+  return to_zero_based(block.ids[i], k, 1);
+}
+
 // Solid cells win: the Triangles or Quadrilaterals of a volume mesh are only
 // its boundary.  The solid cells, of any kinds, are stored by the rule of
 // Mesh_file, their blocks concatenated in the order of the file; faces of two
@@ -261,12 +293,9 @@ inline bool select_MEDIT_solids(const Text_file& file, const MEDIT_content& cont
   for(std::size_t k : blocks) {
     const Solid_cell_kind& kind = solid_cell_kinds()[k];
     const MEDIT_elements& block = content.solids[k];
-    for(std::size_t i = 0; i < block.ids.size(); ++i) {
-      const std::string defect = simplex_defect(block.ids[i], kind.size, content.vertices.size(), 1);
-      if(!defect.empty())
-        file.fail(block.lines[i], std::string(kind.name) + " " + std::to_string(i + 1) + ": " + defect);
-      add_solid_cell(mesh, to_zero_based(block.ids[i], kind.size, 1), kind.size, block.lines[i]);
-    }
+    for(std::size_t i = 0; i < block.ids.size(); ++i)
+      add_solid_cell(mesh, checked_MEDIT_element(file, content, block, i, kind.size, kind.name), kind.size,
+                     block.lines[i]);
   }
   return true;
 }
@@ -286,17 +315,32 @@ inline void select_MEDIT_simplices(const Text_file& file, const MEDIT_content& c
   const int k = cell ? 4 : block.ids.empty() ? 0 : 3;
   (cell ? mesh.cell_size : mesh.simplex_size) = k;
   for(std::size_t i = 0; i < block.ids.size(); ++i) {
-    std::string defect = simplex_defect(block.ids[i], k, content.vertices.size(), 1);
-    if(!defect.empty())
-      file.fail(block.lines[i], std::string(cell ? cell_name(k) : simplex_name(k)) + " " + std::to_string(i + 1)
-                                    + ": " + defect);
-    const std::array<std::size_t, 8> ids = to_zero_based(block.ids[i], k, 1);
+    const std::array<std::size_t, 8> ids =
+      checked_MEDIT_element(file, content, block, i, k, cell ? cell_name(k) : simplex_name(k));
     if(cell)
       mesh.cells.push_back(ids);
     else
       mesh.simplices.push_back({ids[0], ids[1], ids[2], ids[3]});
   }
   (cell ? mesh.cell_lines : mesh.simplex_lines) = block.lines;
+}
+
+// Edges are kept as written (a tool's feature curves, in its order); the
+// Corners and RequiredVertices together, as one set of corners.
+inline void select_MEDIT_edges_and_corners(const Text_file& file, const MEDIT_content& content, Mesh_file& mesh)
+{
+  const MEDIT_elements& edges = content.edges;
+  mesh.edges.reserve(edges.ids.size());
+  for(std::size_t i = 0; i < edges.ids.size(); ++i) {
+    const std::array<std::size_t, 8> ids = checked_MEDIT_element(file, content, edges, i, 2, "edge");
+    mesh.edges.push_back({ids[0], ids[1]});
+  }
+  mesh.edge_lines = edges.lines;
+  for(std::size_t k = 0; k < content.corners.size(); ++k)
+    for(std::size_t i = 0; i < content.corners[k].ids.size(); ++i)
+      mesh.corners.push_back(
+        checked_MEDIT_element(file, content, content.corners[k], i, 1, MEDIT_corner_blocks()[k].name)[0]);
+  sort_without_duplicates(mesh.corners);
 }
 
 inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points)
@@ -307,7 +351,8 @@ inline bool has_negative_zero_z(const std::vector<std::array<double, 3>>& points
   return false;
 }
 
-// One block of the elements of `mesh` that `keep` keeps, each `size` vertices.
+// One block of the elements of `mesh` that `keep` keeps, each `size` vertices
+// and the reference 0.
 template <class Keep, class Elements>
 void write_MEDIT_block(std::ostream& out, const char* keyword, const Elements& elements, int size, const Keep& keep)
 {
@@ -327,7 +372,19 @@ void write_MEDIT_block(std::ostream& out, const char* keyword, const Elements& e
   out << '\n';
 }
 
-// Solid cells in one block per kind, in the order of solid_cell_kinds().
+// (a block of point elements has no reference)
+inline void write_MEDIT_corners(std::ostream& out, const std::vector<std::size_t>& corners)
+{
+  if(corners.empty())
+    return;
+  out << "Corners\n" << corners.size() << '\n';
+  for(std::size_t id : corners)
+    out << id + 1 << '\n';
+  out << '\n';
+}
+
+// Solid cells in one block per kind, in the order of solid_cell_kinds(),
+// then the edges and the corners.
 inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
 {
   const auto all = [](std::size_t) { return true; };
@@ -339,6 +396,8 @@ inline void write_MEDIT_simplices(std::ostream& out, const Mesh_file& mesh)
     write_MEDIT_block(out, "Quadrilaterals", mesh.cells, 4, all);
   }
   write_MEDIT_block(out, mesh.simplex_size == 4 ? "Tetrahedra" : "Triangles", mesh.simplices, mesh.simplex_size, all);
+  write_MEDIT_block(out, "Edges", mesh.edges, 2, all);
+  write_MEDIT_corners(out, mesh.corners);
 }
 
 } // namespace internal

@@ -262,12 +262,12 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
   if(same_keyword(size_token.text, "OFFSETS"))
     file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
   const std::string what = VTK_cell_what(i);
-  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line, 0};
+  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line, 0, {}};
   const std::string defect = VTK_vertex_count_defect(i, cell.size);
   if(!defect.empty())
     file.fail(cell.line, defect);
   for(std::size_t c = 0; c < cell.size; ++c)
-    cell.ids[c] = to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what);
+    cell.set_id(c, to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what));
   return cell;
 }
 
@@ -284,13 +284,13 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
     if(at == size)
       fail_at_byte(file, block.offset_of(at), "truncated: the CELLS block ends after " + std::to_string(i) + " of "
                                                   + std::to_string(count) + " cells");
-    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0, block.offset_of(at)};
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0, block.offset_of(at), {}};
     std::string defect = VTK_vertex_count_defect(i, cell.size);
     if(defect.empty() && cell.size > size - at - 1)
       defect = "truncated: the CELLS block ends inside " + VTK_cell_what(i);
     for(std::size_t c = 0; c < cell.size && defect.empty(); ++c) {
       const double id = v[at + 1 + c];
-      cell.ids[c] = id < 0 ? std::size_t(-1) : saturated_size(id);
+      cell.set_id(c, id < 0 ? std::size_t(-1) : saturated_size(id));
     }
     if(!defect.empty())
       fail_at_byte(file, block.offset_of(at), defect);
@@ -326,8 +326,9 @@ inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, bool binary = false
   return cells;
 }
 
-inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells, Mesh_file& mesh,
-                                bool binary = false)
+// Returns the cells that are lines or vertices (whose cell data is not the mesh's).
+inline std::vector<std::size_t> read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& cells,
+                                                    Mesh_file& mesh, bool binary = false)
 {
   expect_VTK_section(file, "CELL_TYPES", binary);
   Token count_token;
@@ -337,7 +338,7 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
   if(count != cells.size())
     file.fail(count_token.line, "CELL_TYPES has " + std::to_string(count) + " entries but CELLS has "
                                     + std::to_string(cells.size()));
-  VTK_elements elements{mesh, 0};
+  VTK_elements elements{mesh, 0, 0, false, {}};
   bool in_vertices = false;
   if(binary) {
     const VTK_binary_block types = read_VTK_binary_values(file, Token{"int", count_token.line}, count, "CELL_TYPES");
@@ -356,6 +357,12 @@ inline void read_VTK_cell_types(Text_file& file, const std::vector<VTK_cell>& ce
         file.fail(in_vertices ? cells[i].line : t.line, defect);
     }
   }
+  const std::string defect = finish_VTK_elements(elements);
+  if(!defect.empty()) {
+    const VTK_cell& first = cells[elements.edge_and_corner_cells.front()];
+    binary ? fail_at_byte(file, first.offset, defect) : file.fail(first.line, defect);
+  }
+  return std::move(elements.edge_and_corner_cells);
 }
 
 // 'SCALARS fixed type [components]' (`header`: the line after SCALARS),
@@ -467,9 +474,11 @@ inline void skip_VTK_binary_attribute(Text_file& file, const Token& keyword, con
 // point FIELD array, and checks that each block announces as many values as
 // there are points or cells; with `cell_fields` and `point_fields` it keeps
 // the other scalars of one component, as write_VTK() writes its fields; the
-// rest is skipped.
-inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* cell_fields = nullptr,
-                                VTK_fields* point_fields = nullptr, bool binary = false)
+// rest is skipped.  The cell data has a value for each of the file's
+// `number_of_cells`, its lines and vertices too.
+inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, std::size_t number_of_cells,
+                                VTK_fields* cell_fields = nullptr, VTK_fields* point_fields = nullptr,
+                                bool binary = false)
 {
   Token token;
   if(!file.next_token(token))
@@ -486,7 +495,7 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* ce
       in_point_data = same_keyword(token.text, "POINT_DATA");
       in_cell_data = !in_point_data;
       const std::string block(token.text);
-      const std::size_t expected = in_point_data ? mesh.map.size() : mesh.simplices.size() + mesh.cells.size();
+      const std::size_t expected = in_point_data ? mesh.map.size() : number_of_cells;
       Token count;
       if(!file.next_token(count))
         file.fail_truncated("expected the " + block + " count");
@@ -518,7 +527,8 @@ inline void read_VTK_attributes(Text_file& file, Mesh_file& mesh, VTK_fields* ce
 
 // No CELL_DATA for no cell (a file of no phantom has no cells to attach
 // fields to); a POINT_DATA of no point still says that the file lists its
-// fixed vertices (none), so that it reads back as it was written.
+// fixed vertices (none), so that it reads back as it was written.  The cells
+// past a field's values (the edges and corners) get 0, which the reader drops.
 inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::size_t size, const char* section)
 {
   if(fields.empty() || (size == 0 && std::string(section) == "CELL_DATA"))
@@ -533,12 +543,14 @@ inline void write_VTK_fields(std::ostream& out, const VTK_fields& fields, std::s
         write_number(out, v);
       out << '\n';
     }
+    for(std::size_t i = field.values.size(); i < size; ++i)
+      out << "0\n";
   }
 }
 
 inline void write_VTK_cells(std::ostream& out, const Mesh_file& mesh)
 {
-  const std::size_t count = number_of_elements(mesh);
+  const std::size_t count = number_of_VTK_cells(mesh);
   std::size_t size = 0;
   for(std::size_t i = 0; i < count; ++i)
     size += 1 + VTK_element(mesh, i).size;

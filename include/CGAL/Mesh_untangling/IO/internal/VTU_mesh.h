@@ -76,7 +76,8 @@ inline void read_VTU_points(const VTU_decoder& in, Mesh_file& mesh)
     }
 }
 
-inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
+// Returns the cells that are lines or vertices (whose cell data is not the mesh's).
+inline std::vector<std::size_t> read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
 {
   if(!in.doc.has_cells)
     in.fail(in.doc.piece_line, "the Piece has no <Cells>");
@@ -85,7 +86,8 @@ inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
   const VTU_array& connectivity_array = VTU_cell_array(in, "connectivity");
   const VTU_array& types_array = VTU_cell_array(in, "types");
   const std::vector<double> offsets = in.values(offsets_array, m);
-  // Each cell ends where the next starts; the sizes allowed bound the total.
+  // Each cell ends where the next starts; the arrays' sizes are checked
+  // against the data before anything is allocated (VTU_data.h).
   double start = 0;
   for(std::size_t i = 0; i < m; ++i) {
     if(!(offsets[i] > start))
@@ -101,17 +103,17 @@ inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
   const std::vector<double> ids = in.values(connectivity_array, saturated_size(start), &lines);
   const std::vector<double> types = in.values(types_array, m);
   const std::size_t n = mesh.map.size();
-  VTK_elements elements{mesh, 0};
+  VTK_elements elements{mesh, 0, 0, false, {}};
   std::size_t begin = 0;
   for(std::size_t i = 0; i < m; ++i) {
     const std::size_t end = saturated_size(offsets[i]);
-    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - begin, lines.empty() ? 0 : lines[begin], 0};
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - begin, lines.empty() ? 0 : lines[begin], 0, {}};
     const std::size_t line = lines.empty() ? connectivity_array.line : cell.line;
     for(std::size_t c = 0; c < cell.size; ++c) {
       if(ids[begin + c] < 0)
         in.fail(line, VTK_cell_what(i) + ": vertex index " + std::to_string(static_cast<long long>(ids[begin + c]))
                           + " is negative");
-      cell.ids[c] = saturated_size(ids[begin + c]);
+      cell.set_id(c, saturated_size(ids[begin + c]));
     }
     if(types[i] < 0)
       in.fail(types_array.line, VTK_cell_what(i) + " has the negative type "
@@ -122,6 +124,10 @@ inline void read_VTU_cells(const VTU_decoder& in, Mesh_file& mesh)
       in.fail(in_vertices ? line : types_array.line, defect);
     begin = end;
   }
+  const std::string defect = finish_VTK_elements(elements);
+  if(!defect.empty())
+    in.fail(types_array.line, defect);
+  return std::move(elements.edge_and_corner_cells);
 }
 
 inline void read_VTU_fixed(const VTU_decoder& in, const VTU_array& array, Mesh_file& mesh)

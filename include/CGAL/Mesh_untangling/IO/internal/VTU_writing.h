@@ -75,7 +75,9 @@ inline void write_VTU_array_tag(std::ostream& out, const char* type, const std::
   out << " format=\"appended\" offset=\"" << offset << "\"/>\n";
 }
 
-// Integer fields as Int32 (what write_VTK() writes as int), the others as Float64.
+// Integer fields as Int32 (what write_VTK() writes as int), the others as
+// Float64; the cells past a field's values (the edges and corners) get 0,
+// as write_VTK_fields() gives them.
 inline void write_VTU_fields(std::ostream& out, VTU_appended_writer& data, const VTK_fields& fields,
                              const char* element, std::size_t size)
 {
@@ -84,9 +86,11 @@ inline void write_VTU_fields(std::ostream& out, VTU_appended_writer& data, const
   out << "      <" << element << ">\n";
   for(const VTK_field& field : fields) {
     write_VTU_array_tag(out, field.integer ? "Int32" : "Float64", field.name, 1,
-                        data.begin(field.values.size() * (field.integer ? 4 : 8)));
-    for(double v : field.values)
+                        data.begin(size * (field.integer ? 4 : 8)));
+    for(std::size_t i = 0; i < size; ++i) {
+      const double v = i < field.values.size() ? field.values[i] : 0;
       field.integer ? data.put(static_cast<std::int32_t>(v)) : data.put(v);
+    }
   }
   out << "      </" << element << ">\n";
 }
@@ -104,7 +108,7 @@ inline void write_VTU_points(std::ostream& out, VTU_appended_writer& data,
 
 inline void write_VTU_cells(std::ostream& out, VTU_appended_writer& data, const Mesh_file& mesh)
 {
-  const std::size_t count = number_of_elements(mesh);
+  const std::size_t count = number_of_VTK_cells(mesh);
   std::size_t size = 0;
   for(std::size_t i = 0; i < count; ++i)
     size += VTK_element(mesh, i).size;
@@ -132,9 +136,9 @@ inline void write_VTU_file(std::ostream& out, const Mesh_file& mesh, const std::
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
       << (machine_is_big_endian() ? "BigEndian" : "LittleEndian") << "\" header_type=\"UInt64\">\n"
       << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-      << number_of_elements(mesh) << "\">\n";
+      << number_of_VTK_cells(mesh) << "\">\n";
   write_VTU_fields(out, data, point_fields, "PointData", points.size());
-  write_VTU_fields(out, data, cell_fields, "CellData", number_of_elements(mesh));
+  write_VTU_fields(out, data, cell_fields, "CellData", number_of_VTK_cells(mesh));
   write_VTU_points(out, data, points);
   write_VTU_cells(out, data, mesh);
   out << "    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";

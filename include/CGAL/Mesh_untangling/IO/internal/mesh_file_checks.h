@@ -7,6 +7,7 @@
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/internal/simplex_check.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -108,6 +109,28 @@ inline void check_for_writing(const std::string& path, const Mesh_file& mesh, bo
     if(id >= mesh.number_of_vertices())
       throw Write_error(path, "fixed vertex id " + std::to_string(id) + " is out of range "
                                   + index_range(mesh.number_of_vertices(), 0));
+}
+
+// Corners and fixed vertices are sets: readers and writers keep them so.
+inline void sort_without_duplicates(std::vector<std::size_t>& ids)
+{
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+// For the writers of edges and corners (MEDIT, Gmsh, VTK): the defects their
+// readers reject.  The other writers ignore both, and so do not check them.
+inline void check_edges_and_corners(const std::string& path, const Mesh_file& mesh)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  for(std::size_t i = 0; i < mesh.edges.size(); ++i) {
+    const std::string defect = simplex_defect(mesh.edges[i], 2, n, 0);
+    if(!defect.empty())
+      throw Write_error(path, "edge " + std::to_string(i) + ": " + defect);
+  }
+  for(std::size_t id : mesh.corners)
+    if(id >= n)
+      throw Write_error(path, "corner id " + std::to_string(id) + " is out of range " + index_range(n, 0));
 }
 
 struct Single_geometry
