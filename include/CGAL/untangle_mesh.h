@@ -21,7 +21,10 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#include <array>
+#include <functional>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 
@@ -329,7 +332,14 @@ untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& 
 ///     \cgalParamDescription{the fixed vertices: never moved}
 ///     \cgalParamType{a readable property map `C3T3::Triangulation::Vertex_handle` -> `bool`}
 ///     \cgalParamDefault{the vertices of the complex's facets (boundary and interfaces of the subdomains),
-///       of its edges (features) and its corners, and those on the boundary of its cells}
+///       of its edges (features) and its corners, and those on the boundary of its cells; with
+///       `sliding_boundary`, its corners and the vertices of the interfaces between its subdomains}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::sliding_boundary, feature_angle}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`: the boundary of the cells in the complex slides on
+///       itself, its feature edges being the complex's edges (the 1D features Mesh_3 protected) and those
+///       beyond the feature angle}
+///     \cgalParamDefault{`false`, 35 degrees}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
 ///     \cgalParamDescription{the rest shape, as for the `Triangulation_3` overload (with the triangulation's handles)}
@@ -347,12 +357,20 @@ Mesh_untangling::Untangling_result
 untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
 {
   namespace MUI = Mesh_untangling::internal;
+  static_assert(!MUI::is_given_parameter<Named_function_parameters<T, Tag, Base>,
+                                         internal_np::mesh_untangling_feature_edges_t>(),
+                "the feature edges of a Mesh_complex_3_in_triangulation_3 are its edges in the complex");
   const MUI::Triangulation_cells<typename C3T3::Triangulation> cells(MUI::cells_in_complex_of(c3t3));
   std::string error = MUI::triangulation_error(c3t3.triangulation(), "the complex's triangulation");
   if(error.empty() && cells.number_of_cells() == 0) error = "the complex has no cell (no cell is in a subdomain)";
-  return MUI::untangle_triangulation_cells<ConcurrencyTag>(cells, error,
-                                                           [&] { return MUI::complex_boundary_flags(c3t3, cells); },
-                                                           np);
+  const bool sliding = parameters::choose_parameter(
+    parameters::get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
+  const std::vector<std::array<std::size_t, 2>> features =
+    sliding ? MUI::complex_feature_edges(c3t3, cells) : std::vector<std::array<std::size_t, 2>>();
+  return MUI::untangle_triangulation_cells<ConcurrencyTag>(
+    cells, error,
+    [&] { return sliding ? MUI::complex_interface_flags(c3t3, cells) : MUI::complex_boundary_flags(c3t3, cells); },
+    Mesh_untangling::parameters::feature_edges(std::cref(features), np));
 }
 
 /// \cond SKIP_IN_MANUAL

@@ -749,6 +749,41 @@ void test_target_surface()
                 "a target surface is for 3D meshes");
 }
 
+/// Feature edges given by the caller: a path across a face of the cube
+/// becomes a curve its vertices slide on, its ends corners; an edge inside
+/// is counted and is no feature; refusals.
+void test_feature_edges()
+{
+  const int n = 3;
+  Cube c(n);
+  const auto id = [&](int i, int j, int k) { return std::size_t((k * (n + 1) + j) * (n + 1) + i); };
+  std::vector<std::array<std::size_t, 2>> edges;
+  for(int i = 0; i < n; ++i) edges.push_back({id(i, 1, 0), id(i + 1, 1, 0)});   // (the line y = 1 on the face z = 0)
+  edges.push_back({id(1, 1, 1), id(2, 1, 1)});                                    // (inside)
+  std::vector<Point_3> points = c.mesh.points;
+  const auto r = CGAL::untangle_simplex_soup(points, c.cells(),
+    MU::parameters::sliding_boundary(true, MU::parameters::feature_edges(std::cref(edges))));
+  CHECK_SUCCESS(r);
+  CHECK_MESSAGE(r.vertices_sliding_on_curves == 12 * std::size_t(n - 1) && r.corner_vertices_held == 8 + 2 &&   // (the ends turn corners)
+                r.vertices_sliding_on_surfaces == 6 * std::size_t((n - 1) * (n - 1)) - 2 && r.feature_edges_inside == 1,
+                describe(r) << " curves " << r.vertices_sliding_on_curves << " corners " << r.corner_vertices_held
+                            << " surfaces " << r.vertices_sliding_on_surfaces << " inside " << r.feature_edges_inside);
+  for(int i = 0; i <= n; ++i) {
+    const Point_3& q = points[id(i, 1, 0)];
+    CHECK_MESSAGE(q.y() == 1 && q.z() == 0, "vertex (" << i << ", 1, 0) left its feature line: " << q);
+  }
+  c.mesh.points = points;
+  CHECK(c.locally_invertible());
+
+  std::vector<Point_3> again = c.mesh.points;
+  CHECK_INVALID(CGAL::untangle_simplex_soup(again, c.cells(), MU::parameters::feature_edges(edges)),
+                "feature_edges needs sliding_boundary(true)");
+  std::vector<std::array<std::size_t, 2>> out_of_range = edges;
+  out_of_range[1][1] = 999;
+  CHECK_INVALID(CGAL::untangle_simplex_soup(again, c.cells(), MU::parameters::sliding_boundary(true, MU::parameters::feature_edges(out_of_range))),
+                "feature edge 1 has vertex 999, out of range (64 vertices)");
+}
+
 /// The continuation from the rest shape: when it applies, what it reports,
 /// the budget and the callback it shares with the direct untangling.
 void test_continuation()
@@ -1075,6 +1110,7 @@ int main()
   test_more_parameters();
   test_tetrahedral();
   test_target_surface();
+  test_feature_edges();
   test_soups();
   test_continuation();
   test_degenerate_targets();

@@ -174,6 +174,53 @@ void test_complex_named_parameters()
   CHECK_MESSAGE(r.message.find("dimension -1") != std::string::npos, r.message);
 }
 
+/// A sliding boundary on a complex: nothing is fixed by default (one
+/// subdomain, no corner), the boundary stays on the twisted sphere as
+/// given; with no feature by the angle (90 degrees), an edge put in the
+/// complex is a feature (its two ends, where it ends, become corners), a
+/// vertex put in it a corner, which stays.
+void test_complex_sliding()
+{
+  const auto on_boundary = [](const C3t3& c3t3) {
+    std::set<Tr::Vertex_handle> boundary;
+    for(auto c : cells_of(c3t3))
+      for(int i = 0; i < 4; ++i)
+        if(!c3t3.is_in_complex(c->neighbor(i)))
+          for(int k = 1; k < 4; ++k) boundary.insert(c->vertex((i + k) & 3));
+    return boundary;
+  };
+  C3t3 c3t3 = twisted_ball();
+  const std::size_t boundary = on_boundary(c3t3).size();
+  const auto sliding = MU::parameters::sliding_boundary(true, MU::parameters::feature_angle(90.));
+  const MU::Untangling_result r = CGAL::untangle_mesh(c3t3, sliding);
+  std::cout << "C3T3, sliding: " << r.vertices_sliding_on_surfaces << " on surfaces, " << r.vertices_sliding_on_curves
+            << " on curves, " << r.corner_vertices_held << " corners, " << r.max_distance_to_target << " from it\n";
+  CHECK_MESSAGE(r.is_locally_invertible(), r.message);
+  CHECK(inverted_cells(cells_of(c3t3)) == 0);
+  CHECK(r.vertices_sliding_on_surfaces + r.vertices_sliding_on_curves + r.corner_vertices_held == boundary);
+  CHECK(r.max_distance_to_target >= 0 && r.max_distance_to_target < 1e-9);
+
+  C3t3 marked = twisted_ball();
+  Tr::Edge feature;
+  Tr::Vertex_handle corner;
+  const std::set<Tr::Vertex_handle> marked_boundary = on_boundary(marked);
+  for(auto c : cells_of(marked))   // (an edge of a boundary facet, and a vertex of the boundary off it)
+    for(int i = 0; i < 4 && corner == Tr::Vertex_handle(); ++i)
+      if(!marked.is_in_complex(c->neighbor(i))) {
+        feature = Tr::Edge(c, (i + 1) & 3, (i + 2) & 3);
+        for(auto v : marked_boundary)
+          if(v != c->vertex((i + 1) & 3) && v != c->vertex((i + 2) & 3)) { corner = v; break; }
+      }
+  marked.add_to_complex(feature, 1);
+  marked.add_to_complex(corner, 1);
+  const Tr::Point corner_given = corner->point();
+  const MU::Untangling_result m = CGAL::untangle_mesh(marked, sliding);
+  CHECK_MESSAGE(m.is_locally_invertible(), m.message);
+  CHECK_MESSAGE(m.corner_vertices_held == r.corner_vertices_held + 2 && m.vertices_sliding_on_curves == 0,
+                m.corner_vertices_held << " corners, not " << r.corner_vertices_held << " + 2");
+  CHECK(same_bits(corner->point(), corner_given));
+}
+
 /// 300 random points in the unit cube and its corners, the points inside
 /// the hull moved by up to `shake` in each coordinate.
 template <typename Triangulation, typename MakePoint>
@@ -291,6 +338,7 @@ int main()
 {
   test_complex_defaults();
   test_complex_named_parameters();
+  test_complex_sliding();
   test_delaunay();
   test_regular();
   test_degenerate_triangulations();

@@ -115,6 +115,9 @@ struct Untangling_result
   std::size_t sliding_rounds = 0;
   double max_distance_to_target = -1;
   double boundary_moved_onto_target = -1;
+  /// With `parameters::feature_edges`: the given edges that are not edges
+  /// of the boundary (inside the mesh), which are no feature of it.
+  std::size_t feature_edges_inside = 0;
 
   /// steps of the continuation from the rest shape that ended locally
   /// invertible (0 when it did not run; see `Continuation`)

@@ -36,6 +36,7 @@ enum mesh_untangling_optimize_quality_t { mesh_untangling_optimize_quality };
 enum mesh_untangling_sliding_boundary_t { mesh_untangling_sliding_boundary };
 enum mesh_untangling_feature_angle_t { mesh_untangling_feature_angle };
 enum mesh_untangling_target_surface_t { mesh_untangling_target_surface };
+enum mesh_untangling_feature_edges_t { mesh_untangling_feature_edges };
 enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_output };
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
@@ -265,8 +266,21 @@ CGAL_MESH_UNTANGLING_PARAMETER(sliding_boundary, mesh_untangling_sliding_boundar
 /// `double`, in degrees, in (0, 90]: the angle between two boundary facets'
 /// planes beyond which their edge is a feature of the sliding boundary
 /// (default 35).  The planes' angle, not the normals': a facet folded over
-/// in the tangled input (its normal reversed) makes no feature.
+/// in the tangled input (its normal reversed) makes no feature.  At 90
+/// no edge is a feature by its angle: only the given `feature_edges` are.
 CGAL_MESH_UNTANGLING_PARAMETER(feature_angle, mesh_untangling_feature_angle_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A `std::vector<std::array<std::size_t, 2>>`, or its `std::cref` (3D
+/// meshes of the soup and `TetrahedralComplex` entries, with
+/// `sliding_boundary`): edges, as pairs of vertex indices, that are feature
+/// edges of the sliding boundary besides those of `feature_angle` (a
+/// meshing tool's ridges and feature curves; default none).  A given edge
+/// that is not an edge of the boundary (one on an interface between
+/// subdomains) is no feature: only the boundary slides;
+/// `Untangling_result::feature_edges_inside` counts them.  An index out of
+/// range makes the input invalid.  The `Mesh_complex_3_in_triangulation_3`
+/// overload takes the complex's edges (its 1D features) instead.
+CGAL_MESH_UNTANGLING_PARAMETER(feature_edges, mesh_untangling_feature_edges_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// A `CGAL::Mesh_untangling::Target_surface`, or its `std::cref` (3D
 /// meshes, with `sliding_boundary`): the surface the boundary slides on

@@ -11,12 +11,14 @@
 #include <CGAL/Mesh_untangling/parameters.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -61,6 +63,8 @@ struct Untangling_options
   // planes meet at more than feature_angle degrees.
   bool sliding_boundary = false;
   double feature_angle = 35;
+  // Feature edges given besides those of the angle (vertex index pairs).
+  std::vector<std::array<std::size_t, 2>> feature_edges;
   // The surface the boundary slides on instead of its own (none: its own).
   std::shared_ptr<const Target_surface> target_surface;
   // A named parameter out of its range, in words (the run is INVALID_INPUT).

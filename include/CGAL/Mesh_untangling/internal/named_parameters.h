@@ -65,6 +65,11 @@ Untangling_options read_options(const NamedParameters& np)
   o.sliding_boundary = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   o.feature_angle = choose_parameter(get_parameter(np, internal_np::mesh_untangling_feature_angle), 35.);
   if(const std::string refused = feature_angle_refusal(o.feature_angle); !refused.empty()) o.invalid_parameter = refused;
+  if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_feature_edges_t>()) {
+    const std::vector<std::array<std::size_t, 2>>& edges = get_parameter(np, internal_np::mesh_untangling_feature_edges);
+    o.feature_edges = edges;
+    if(!o.feature_edges.empty() && !o.sliding_boundary) o.invalid_parameter = "feature_edges needs sliding_boundary(true)";
+  }
   if constexpr(is_given_parameter<NamedParameters, internal_np::mesh_untangling_target_surface_t>()) {
     const Target_surface& surface = get_parameter(np, internal_np::mesh_untangling_target_surface);   // (or its std::cref)
     if(!surface.points.empty() || !surface.triangles.empty()) {

@@ -202,6 +202,39 @@ std::vector<bool> complex_boundary_flags(const C3T3& c3t3,
   return flags;
 }
 
+/// The fixed vertices of a Mesh_complex_3_in_triangulation_3 whose boundary
+/// slides: its corners and the vertices of the facets between two of its
+/// cells (interfaces between subdomains, which do not slide).
+template <typename C3T3>
+std::vector<bool> complex_interface_flags(const C3T3& c3t3,
+                                          const Triangulation_cells<typename C3T3::Triangulation>& cells)
+{
+  std::vector<bool> flags(cells.number_of_vertices(), false);
+  const auto mark = [&](auto v) {
+    if(const auto i = cells.find(v)) flags[*i] = true;
+  };
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    if(c3t3.is_in_complex(f->first) && c3t3.is_in_complex(f->first->neighbor(f->second)))
+      for(int k = 1; k < 4; ++k) mark(f->first->vertex((f->second + k) & 3));
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    mark(typename C3T3::Triangulation::Vertex_handle(v));
+  return flags;
+}
+
+/// The edges of a Mesh_complex_3_in_triangulation_3 (its 1D features), as
+/// pairs of indices in `cells`.
+template <typename C3T3>
+std::vector<std::array<std::size_t, 2>> complex_feature_edges(const C3T3& c3t3,
+                                                              const Triangulation_cells<typename C3T3::Triangulation>& cells)
+{
+  std::vector<std::array<std::size_t, 2>> edges;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
+    const auto a = cells.find(e->first->vertex(e->second)), b = cells.find(e->first->vertex(e->third));
+    if(a && b) edges.push_back({*a, *b});
+  }
+  return edges;
+}
+
 template <typename Triangulation>
 std::vector<typename Triangulation::Cell_handle> finite_cells_of(const Triangulation& tr)
 {

@@ -78,18 +78,26 @@ std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>&
 /// boundary).  The feature edges are found on the rest shape when `in` has
 /// one, where a fold of the tangled boundary makes no false feature.
 /// Throws std::invalid_argument for a seamless map, a target surface in 2D
-/// or one that is not valid.
+/// or one that is not valid, or a given feature edge with a vertex out of
+/// range (or in 2D, where every boundary edge is one).
 template <int d>
 std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, const Untangling_options& options)
 {
   if(in.has_links()) throw std::invalid_argument("a sliding boundary is not offered for seamless parameterizations");
   if(d != 3 && options.target_surface)
     throw std::invalid_argument("a target surface is for 3D meshes: in 2D the boundary slides on its own polyline");
+  if(d != 3 && !options.feature_edges.empty())
+    throw std::invalid_argument("feature edges are for 3D meshes: in 2D every boundary edge is on a curve");
+  for(std::size_t k = 0; k < options.feature_edges.size(); ++k)
+    for(std::size_t v : options.feature_edges[k])
+      if(v >= in.positions.size())
+        throw std::invalid_argument("feature edge " + std::to_string(k) + " has vertex " + std::to_string(v) +
+                                    ", out of range (" + std::to_string(in.positions.size()) + " vertices)");
   std::vector<bool> fixed = in.is_fixed;
   const bool has_rest_shape = in.rest_shape.size() == in.positions.size();
   auto target = std::make_shared<Sliding_target<d>>(in.positions, boundary_facets<d>(in), fixed, options.feature_angle,
                                                     has_rest_shape ? in.rest_shape : in.positions,
-                                                    options.target_surface.get());
+                                                    options.feature_edges, options.target_surface.get());
   in.rest_shape = {};
   fixed.resize(in.positions.size(), false);
   for(std::size_t v = 0; v < fixed.size(); ++v)
@@ -122,6 +130,7 @@ void record_sliding(Sliding_target<d>& target, const Untangling_input<d>& in, in
   r.sliding_rounds = std::size_t(rounds);
   r.max_distance_to_target = target.largest_distance(in.positions);
   r.boundary_moved_onto_target = target.first_projection();
+  r.feature_edges_inside = target.given_edges_inside();
 }
 
 /// Climbs the ladder (`climb(options)` on `in`, from its positions) in

@@ -5,7 +5,10 @@
 // cut by its feature edges into surface patches and feature curves.
 //
 // An edge of the boundary surface is a feature when its two facets' planes
-// meet at more than the feature angle, or when it has not two facets.  The
+// meet at more than the feature angle, when it has not two facets, or when
+// the caller gives it (a meshing tool's ridges: MEDIT Edges, Gmsh lines, a
+// Mesh_3 complex's edges; a given edge inside the mesh, on an interface
+// between subdomains, is none: only the boundary slides).  The
 // planes' angle, not the normals': in a tangled input a facet may be folded
 // over, its normal reversed, and that makes no feature.  A vertex on no
 // feature edge slides on its patch (the facets reached without crossing a
@@ -82,21 +85,22 @@ public:
   /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in
   /// degrees; the feature edges are those of the mesh at `shape` (the same
   /// vertices elsewhere: a valid rest shape, where the map's boundary is
-  /// folded), the patches and curves the facets and feature edges at
+  /// folded) and the `given` ones on the boundary (3D; each vertex below
+  /// positions.size()), the patches and curves the facets and feature edges at
   /// `positions`, or those of `surface` when one is given (3D only; throws
   /// std::invalid_argument, naming the triangle or point, for a surface
   /// with an index out of range, a point not finite, or no triangle of
   /// non-zero area).
   Sliding_target(const std::vector<Vector>& positions, const std::vector<Facet>& facets,
                  const std::vector<bool>& is_fixed, double feature_angle, const std::vector<Vector>& shape,
-                 const Target_surface* surface = nullptr)
+                 const std::vector<std::array<std::size_t, 2>>& given = {}, const Target_surface* surface = nullptr)
     : role_(positions.size(), Sliding_role::INTERIOR), place_(positions.size(), 0),
       min_cos_(std::cos(feature_angle * 3.14159265358979323846 / 180))
   {
     for(const Facet& f : facets)
       for(std::size_t v : f) role_[v] = Sliding_role::SURFACE;
     measure_diagonal(positions);
-    const std::vector<std::array<std::size_t, 2>> features = feature_edges(shape, facets);
+    const std::vector<std::array<std::size_t, 2>> features = feature_edges(shape, facets, given);
     const std::vector<std::vector<std::size_t>> ends = feature_ends(features);
     classify(shape, ends, is_fixed);
     if constexpr(d == 3) make_patches(positions, facets, features);
@@ -110,6 +114,8 @@ public:
   bool slides(std::size_t v) const { return role_[v] == Sliding_role::SURFACE || role_[v] == Sliding_role::CURVE; }
   /// The bounding box diagonal of the boundary as given.
   double diagonal() const { return diagonal_; }
+  /// The given feature edges that are not edges of the boundary.
+  std::size_t given_edges_inside() const { return given_edges_inside_; }
 
   /// Moves every sliding vertex of `positions` to the closest point of its
   /// patch or curve and sets its tangent projector there in `sliding`
@@ -209,8 +215,9 @@ private:
 
   /// The feature edges, each with its smaller vertex first: in 2D every
   /// boundary edge; in 3D the edges of the boundary surface whose facets'
-  /// planes are apart, or that have not two facets.
-  std::vector<Edge> feature_edges(const std::vector<Vector>& positions, const std::vector<Facet>& facets) const
+  /// planes are apart, that have not two facets, or that are `given`.
+  std::vector<Edge> feature_edges(const std::vector<Vector>& positions, const std::vector<Facet>& facets,
+                                  const std::vector<Edge>& given)
   {
     std::vector<Edge> features;
     if constexpr(d == 2) {
@@ -230,8 +237,15 @@ private:
           features.push_back(sides[i].first);
         i = j;
       }
+      for(const Edge& e : given) {
+        const Edge edge{std::min(e[0], e[1]), std::max(e[0], e[1])};
+        const auto side = std::lower_bound(sides.begin(), sides.end(), std::make_pair(edge, std::size_t(0)));
+        if(side != sides.end() && side->first == edge) features.push_back(edge);
+        else ++given_edges_inside_;
+      }
     }
     std::sort(features.begin(), features.end());
+    features.erase(std::unique(features.begin(), features.end()), features.end());
     return features;
   }
 
@@ -549,7 +563,7 @@ private:
   {
     const std::vector<double> reach = reaches(positions, mesh_facets);
     const auto [points, facets] = read_surface(surface);
-    Sliding_target target(points, facets, {}, feature_angle, points);
+    Sliding_target target(points, facets, {}, feature_angle, points);   // (its features by the angle alone)
     if(target.triangles_.empty()) throw std::invalid_argument("target_surface: no triangle of non-zero area");
     Patch_tree all;   // (every triangle of the target)
     for(std::size_t t = 0; t < target.triangles_.size(); ++t) {
@@ -639,6 +653,7 @@ private:
   std::vector<Sliding_role> role_;
   std::vector<std::pair<std::size_t, Vector>> corner_places_;   // (a target surface's) each corner's place on it
   double first_projection_ = -1;
+  std::size_t given_edges_inside_ = 0;
   std::vector<std::size_t> place_;      // per sliding vertex: its triangle, or its segment on its curve
   std::vector<std::size_t> curve_of_;   // per curve vertex: its curve
   std::vector<Triangle> triangles_;
