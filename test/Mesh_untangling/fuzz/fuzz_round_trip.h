@@ -105,6 +105,8 @@ inline void check_same_mesh(const CGAL::Mesh_untangling::IO::Mesh_file& a,
   if(!same_bits(a.map, b.map)) mismatch("the map positions");
   if(a.has_fixed != b.has_fixed) mismatch("whether fixed vertices are listed");
   if(!same_bits(a.fixed, b.fixed)) mismatch("the fixed vertices");
+  if(!same_bits(a.edges, b.edges)) mismatch("the edges");
+  if(!same_bits(a.corners, b.corners)) mismatch("the corners");
   if(!same_bits(a.corner_map, b.corner_map)) mismatch("the per-corner map");
   if(!same_bits(a.simplex_corner_map, b.simplex_corner_map)) mismatch("the corners' texture coordinates");
   if(!same_bits(a.file_vertices, b.file_vertices)) mismatch("the file's vertices (welded layout)");
