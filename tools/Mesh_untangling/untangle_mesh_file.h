@@ -62,6 +62,8 @@ struct Run_options
   /// boundary slides on the input's own surface patches and feature curves
   bool sliding_boundary = false;
   double feature_angle = 35;
+  /// Mesh_untangling::parameters::feature_edges (a file's edges: its tool's ridges)
+  std::vector<std::array<std::size_t, 2>> feature_edges;
   /// Mesh_untangling::parameters::target_surface (empty: the input's own boundary)
   CGAL::Mesh_untangling::Target_surface target_surface;
   /// a per-corner map (seams): Mesh_untangling::parameters::seam_translations

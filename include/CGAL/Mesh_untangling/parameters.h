@@ -270,11 +270,11 @@ CGAL_MESH_UNTANGLING_PARAMETER(sliding_boundary, mesh_untangling_sliding_boundar
 /// no edge is a feature by its angle: only the given `feature_edges` are.
 CGAL_MESH_UNTANGLING_PARAMETER(feature_angle, mesh_untangling_feature_angle_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
-/// A `std::vector<std::array<std::size_t, 2>>`, or its `std::cref` (3D
-/// meshes of the soup and `TetrahedralComplex` entries, with
-/// `sliding_boundary`): edges, as pairs of vertex indices, that are feature
-/// edges of the sliding boundary besides those of `feature_angle` (a
-/// meshing tool's ridges and feature curves; default none).  A given edge
+/// A `std::vector<std::array<std::size_t, 2>>`, or its `std::cref` (the
+/// soup and `TetrahedralComplex` entries, with `sliding_boundary`): edges,
+/// as pairs of vertex indices, that are feature edges of the sliding
+/// boundary besides those of `feature_angle` (a meshing tool's ridges and
+/// feature curves; default none; in 2D every boundary edge is one).  A given edge
 /// that is not an edge of the boundary (one on an interface between
 /// subdomains) is no feature: only the boundary slides;
 /// `Untangling_result::feature_edges_inside` counts them.  An index out of

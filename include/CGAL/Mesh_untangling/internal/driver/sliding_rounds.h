@@ -79,15 +79,13 @@ std::vector<std::vector<std::size_t>> boundary_facets(const Untangling_input<d>&
 /// one, where a fold of the tangled boundary makes no false feature.
 /// Throws std::invalid_argument for a seamless map, a target surface in 2D
 /// or one that is not valid, or a given feature edge with a vertex out of
-/// range (or in 2D, where every boundary edge is one).
+/// range.
 template <int d>
 std::shared_ptr<Sliding_target<d>> slide_the_boundary(Untangling_input<d>& in, const Untangling_options& options)
 {
   if(in.has_links()) throw std::invalid_argument("a sliding boundary is not offered for seamless parameterizations");
   if(d != 3 && options.target_surface)
     throw std::invalid_argument("a target surface is for 3D meshes: in 2D the boundary slides on its own polyline");
-  if(d != 3 && !options.feature_edges.empty())
-    throw std::invalid_argument("feature edges are for 3D meshes: in 2D every boundary edge is on a curve");
   for(std::size_t k = 0; k < options.feature_edges.size(); ++k)
     for(std::size_t v : options.feature_edges[k])
       if(v >= in.positions.size())

@@ -85,7 +85,7 @@ public:
   /// `is_fixed` (empty: none) its fixed vertices, `feature_angle` in
   /// degrees; the feature edges are those of the mesh at `shape` (the same
   /// vertices elsewhere: a valid rest shape, where the map's boundary is
-  /// folded) and the `given` ones on the boundary (3D; each vertex below
+  /// folded) and the `given` ones on the boundary (each vertex below
   /// positions.size()), the patches and curves the facets and feature edges at
   /// `positions`, or those of `surface` when one is given (3D only; throws
   /// std::invalid_argument, naming the triangle or point, for a surface
@@ -95,7 +95,7 @@ public:
                  const std::vector<bool>& is_fixed, double feature_angle, const std::vector<Vector>& shape,
                  const std::vector<std::array<std::size_t, 2>>& given = {}, const Target_surface* surface = nullptr)
     : role_(positions.size(), Sliding_role::INTERIOR), place_(positions.size(), 0),
-      min_cos_(std::cos(feature_angle * 3.14159265358979323846 / 180))
+      min_cos_(feature_angle >= 90 ? 0. : std::cos(feature_angle * 3.14159265358979323846 / 180))   // (90: none, not the perpendicular)
   {
     for(const Facet& f : facets)
       for(std::size_t v : f) role_[v] = Sliding_role::SURFACE;
@@ -220,8 +220,11 @@ private:
                                   const std::vector<Edge>& given)
   {
     std::vector<Edge> features;
-    if constexpr(d == 2) {
+    if constexpr(d == 2) {   // (a given edge on the boundary is there already)
       for(const Facet& f : facets) features.push_back({std::min(f[0], f[1]), std::max(f[0], f[1])});
+      std::sort(features.begin(), features.end());
+      for(const Edge& e : given)
+        given_edges_inside_ += !std::binary_search(features.begin(), features.end(), Edge{std::min(e[0], e[1]), std::max(e[0], e[1])});
     } else {
       std::vector<std::pair<Edge, std::size_t>> sides;   // (edge, facet)
       for(std::size_t i = 0; i < facets.size(); ++i)
