@@ -14,6 +14,8 @@
 #include <CGAL/Mesh_untangling/IO/VTK.h>
 #include <CGAL/Mesh_untangling/IO/VTU.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <filesystem>
 #include <string>
@@ -23,7 +25,26 @@ namespace Mesh_untangling {
 namespace IO {
 namespace internal {
 
-inline const char* supported_extensions() { return "supported: .obj .off .vtk .vtu .mesh .msh .stl .input"; }
+/// The extensions read_mesh_file() and write_mesh_file() take, lowercase.
+inline const std::array<const char*, 8>& mesh_file_extensions()
+{
+  static const std::array<const char*, 8> extensions{".obj", ".off", ".vtk", ".vtu", ".mesh", ".msh", ".stl", ".input"};
+  return extensions;
+}
+
+inline bool is_mesh_file_extension(const std::string& lowercase_extension)
+{
+  const auto& all = mesh_file_extensions();
+  return std::find(all.begin(), all.end(), lowercase_extension) != all.end();
+}
+
+/// "supported: .obj .off ...", for messages.
+inline std::string supported_extensions()
+{
+  std::string text = "supported:";
+  for(const char* extension : mesh_file_extensions()) text += std::string(" ") + extension;
+  return text;
+}
 
 inline std::string lowercase_extension(const std::string& path)
 {
