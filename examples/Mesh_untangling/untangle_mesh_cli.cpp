@@ -127,12 +127,6 @@ struct Usage_error : std::runtime_error { using std::runtime_error::runtime_erro
 
 using IO::internal::lowercase_extension;
 
-bool is_mesh_extension(const std::string& ext)
-{
-  return ext == ".obj" || ext == ".off" || ext == ".vtk" || ext == ".vtu" || ext == ".mesh" || ext == ".msh"
-         || ext == ".input";
-}
-
 std::string default_output(const std::string& input)
 {
   const fs::path p(input);
@@ -154,9 +148,9 @@ bool same_file(const std::string& a, const std::string& b)
 void check_output_paths(const Arguments& args)
 {
   const std::string ext = lowercase_extension(args.output);
-  if(!is_mesh_extension(ext))
+  if(!IO::internal::is_mesh_file_extension(ext))
     throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
-                      "' (supported: .obj .off .vtk .vtu .mesh .msh .input)");
+                      "' (" + IO::internal::supported_extensions() + ")");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
   const std::pair<const char*, const std::string*> outputs[] = {
@@ -292,6 +286,10 @@ std::vector<bool> fixed_vertices(const Arguments& args, Mesh_file& mesh, std::st
     source = "none";
   }
   for(std::size_t v : ids) fixed[v] = true;
+  if(args.slide_boundary && !mesh.corners.empty()) {   // (its meshing tool's corners stay, as where curves meet)
+    for(std::size_t v : mesh.corners) fixed[v] = true;
+    source = (source == "none" ? "" : source + " and ") + args.input + "'s corners";
+  }
   mesh.fixed.clear();
   for(std::size_t v = 0; v < fixed.size(); ++v)
     if(fixed[v]) mesh.fixed.push_back(v);
@@ -323,7 +321,7 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
     throw Usage_error(args.phantoms + ": no phantom element protects " + element_kind(mesh) +
                       " (their corner simplices overlap: fix the boundary)");
   const std::string ext = lowercase_extension(args.phantoms);
-  if(!is_mesh_extension(ext) || ext == ".input")
+  if(!IO::internal::is_mesh_file_extension(ext) || ext == ".input")
     throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .vtu, .mesh, "
                       ".msh, .off or .obj file (.vtk and .vtu carry the fields)");
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
@@ -506,6 +504,8 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["min_quality_after_optimization"] = optional_figure(r.min_quality_after_optimization);
   j["sliding_boundary"] = args.slide_boundary;
   j["feature_angle"] = args.feature_angle;
+  j["feature_edges_given"] = args.slide_boundary ? mesh.edges.size() : 0;
+  j["feature_edges_inside"] = r.feature_edges_inside;
   j["vertices_sliding_on_surfaces"] = r.vertices_sliding_on_surfaces;
   j["vertices_sliding_on_curves"] = r.vertices_sliding_on_curves;
   j["corner_vertices_held"] = r.corner_vertices_held;
@@ -601,7 +601,9 @@ MU::Target_surface read_target_surface(const std::string& path)
   return surface;
 }
 
-Run_options run_options(const Arguments& args, Progress_display* display)
+/// The run `args` ask for on `mesh`; with --slide-boundary, the file's
+/// edges (its meshing tool's ridges) are feature edges.
+Run_options run_options(const Arguments& args, const Mesh_file& mesh, Progress_display* display)
 {
   Run_options options;
   options.interrupted = [] { return interrupting_signal != 0; };
@@ -620,6 +622,7 @@ Run_options run_options(const Arguments& args, Progress_display* display)
   options.optimize_quality = args.optimize_quality;
   options.sliding_boundary = args.slide_boundary;
   options.feature_angle = args.feature_angle;
+  if(args.slide_boundary) options.feature_edges = mesh.edges;
   if(!args.target_surface.empty()) options.target_surface = read_target_surface(args.target_surface);
   if(display) {
     options.progress = [display](const MU::Untangling_step& s) { display->step(s); };
@@ -790,6 +793,9 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.vertices_sliding_on_surfaces, r.vertices_sliding_on_curves, r.corner_vertices_held,
                    r.max_distance_to_target, r.max_distance_to_target / std::max(1e-300, map_diagonal(mesh)),
                    r.sliding_rounds, r.sliding_rounds == 1 ? "" : "s");
+    if(r.max_distance_to_target >= 0 && !mesh.edges.empty())
+      std::fprintf(stderr, "feature edges: %zu given by %s, %zu of them inside the mesh (no feature of its boundary)\n",
+                   mesh.edges.size(), args.input.c_str(), r.feature_edges_inside);
     if(!args.target_surface.empty() && r.boundary_moved_onto_target >= 0)
       std::fprintf(stderr, "target surface %s: the boundary was moved onto it by %.3g at most (%.3g of the boundary's size)\n",
                    args.target_surface.c_str(), r.boundary_moved_onto_target,
@@ -928,7 +934,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   const Grid_singularities grid_before = integer_grid_singularities(mesh);
   std::unique_ptr<Progress_display> display;
   if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
-  Run_options options = run_options(args, display.get());
+  Run_options options = run_options(args, mesh, display.get());
   options.seam_translations =
     args.seams == "free-translations" ? MU::Seam_translations::FREE : MU::Seam_translations::KEEP;
   {
@@ -1040,7 +1046,7 @@ int run(const Arguments& args)
   if(!args.quiet) display = std::make_unique<Progress_display>(isatty(STDERR_FILENO));
   {
     const Stop_on_signal stop_on_signal;
-    run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, display.get()), &run.record);
+    run.result = untangle_mesh_file(mesh, run.fixed, run_options(args, mesh, display.get()), &run.record);
   }
   display.reset();
   run.fixed.resize(mesh.map.size(), false);   // the vertices a refinement added are free
@@ -1110,11 +1116,13 @@ int main(int argc, char** argv)
   auto* fix_boundary = app.add_flag("--fix-boundary", args.fix_boundary, "fix every boundary vertex")->excludes(fixed);
   auto* slide = app.add_flag("--slide-boundary", args.slide_boundary, "the boundary vertices slide on the input's "
                "boundary as given: on their surface patch, or on their feature curve (an edge whose facets' planes meet "
-               "beyond --feature-angle), corners where curves meet or end and --fixed vertices staying; in 2D along "
-               "the boundary polyline. Every sliding vertex ends on its target (the summary and report give the "
-               "largest distance)")->excludes(fix_boundary);
+               "beyond --feature-angle, or an edge the file lists: MEDIT Edges, Gmsh and VTK lines), corners where "
+               "curves meet or end, the file's corners (MEDIT Corners and RequiredVertices, Gmsh and VTK points) and "
+               "--fixed vertices staying; in 2D along the boundary polyline. Every sliding vertex ends on its target "
+               "(the summary and report give the largest distance)")->excludes(fix_boundary);
   app.add_option("--feature-angle", args.feature_angle, "with --slide-boundary: the angle in degrees, in (0, 90], "
-                 "between two boundary facets' planes beyond which their edge is a feature (default 35)")
+                 "between two boundary facets' planes beyond which their edge is a feature (default 35; 90: only "
+                 "the file's edges are)")
     ->check(CLI::Range(1e-9, 90.0))->needs(slide);
   app.add_option("--target-surface", args.target_surface, "with --slide-boundary (3D): a triangle surface (.off, "
                  ".obj, .stl, ...), or a tetrahedral mesh whose boundary is taken, that the boundary slides on instead of its own, as when a mesh is fitted to a CAD model: "
