@@ -643,11 +643,13 @@ private:
     };
     for(std::size_t v : corners) {
       const std::size_t k = closest(positions[v], target_corners, [&](std::size_t i) { return target_points[i]; });
-      const Curve_point on_curve = target.closest_on_curves(positions[v]);
       if(k != std::size_t(-1) && (target_points[k] - positions[v]).norm() <= reach[v] &&
-         closest(target_points[k], corners, [&](std::size_t i) { return positions[i]; }) == v)
+         closest(target_points[k], corners, [&](std::size_t i) { return positions[i]; }) == v) {
         corner_places_.push_back({v, target_points[k]});
-      else if(on_curve.squared_distance <= reach[v] * reach[v]) corner_places_.push_back({v, on_curve.point});
+        continue;
+      }
+      const Curve_point on_curve = target.closest_on_curves(positions[v]);
+      if(on_curve.squared_distance <= reach[v] * reach[v]) corner_places_.push_back({v, on_curve.point});
       else on_surface.push_back(v);
     }
     return on_surface;
