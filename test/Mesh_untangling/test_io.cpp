@@ -1222,6 +1222,16 @@ void test_writer_errors()
   CHECK_WRITE_ERROR(IO::write_OFF(temp_path("dir.off"), triangle_mesh(0, 3)),
                     "dir.off: is a directory, not a regular file: refusing to replace it");
 
+  // A map dimension with no map beside a rest: the rest is the geometry
+  // written (not no point under faces that name five).
+  Mesh_file rest_only = triangle_mesh(3, 0);
+  rest_only.map_dimension = 3;
+  for(const char* name : {"rest-only.off", "rest-only.vtk", "rest-only.mesh"}) {
+    IO::write_mesh_file(temp_path(name), rest_only);
+    const Mesh_file back = IO::read_mesh_file(temp_path(name));
+    CHECK_MESSAGE(back.map == rest_only.rest && back.simplices == rest_only.simplices, name << " lost the rest");
+  }
+
   // A rejected mesh leaves an existing target untouched.
   const std::string target = temp_path("kept.vtk");
   IO::write_VTK(target, tets);

@@ -143,7 +143,7 @@ struct Single_geometry
 // user wants to see; the rest only when there is no map.
 inline Single_geometry single_geometry(const Mesh_file& mesh)
 {
-  if(mesh.map_dimension != 0)
+  if(mesh.map_dimension != 0 && (!mesh.map.empty() || mesh.rest.empty()))   // (an empty map beside a rest is none)
     return Single_geometry{&mesh.map, mesh.map_dimension};
   return Single_geometry{&mesh.rest, mesh.rest_dimension};
 }
