@@ -407,7 +407,8 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                    const py::handle& max_iterations, const py::handle& time_limit, const py::handle& threads,
                    const py::handle& progress, const py::handle& callback, bool refine,
                    const py::handle& refine_budget, bool optimize_quality, bool slide_boundary, double feature_angle,
-                   const py::handle& target_surface, const std::string& seam_translations, const py::handle& out)
+                   const py::handle& feature_edges, const py::handle& target_surface,
+                   const std::string& seam_translations, const py::handle& out)
 {
   // Every parameter is read and checked here, before any work.
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
@@ -452,6 +453,19 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
     throw py::value_error(refused);
   if(slide_boundary && mesh.has_corner_map())
     throw py::value_error("slide_boundary=True is not offered for seamless maps");
+  if(!feature_edges.is_none()) {
+    if(!slide_boundary) throw py::value_error("feature_edges needs slide_boundary=True");
+    const Ids edges = ids_array(feature_edges, "feature_edges");
+    if(edges.shape(1) != 2) throw py::value_error("feature_edges must be m x 2 vertex ids, not " + shape_of(edges));
+    const auto e = edges.unchecked<2>();
+    for(py::ssize_t k = 0; k < e.shape(0); ++k) {
+      for(py::ssize_t i = 0; i < 2; ++i)
+        if(e(k, i) < 0 || std::size_t(e(k, i)) >= mesh.number_of_vertices())
+          throw py::value_error("feature_edges row " + std::to_string(k) + ": vertex " + std::to_string(e(k, i)) +
+                                " is not among the " + std::to_string(mesh.number_of_vertices()) + " vertices");
+      options.feature_edges.push_back({std::size_t(e(k, 0)), std::size_t(e(k, 1))});
+    }
+  }
   if(!target_surface.is_none()) {
     if(!slide_boundary) throw py::value_error("target_surface needs slide_boundary=True");
     if(!py::isinstance<py::tuple>(target_surface) || py::len(target_surface) != 2)
@@ -559,6 +573,7 @@ struct Python_mesh
 {
   std::string kind;
   py::object vertices, elements, rest = py::none(), rest_elements = py::none(), fixed = py::none();
+  py::object edges = py::none(), corners = py::none();   ///< a meshing tool's feature edges and corners
   py::dict point_fields, cell_fields;   ///< .vtk: name -> one value per vertex or element
   py::object welded_vertex_of_file_vertex = py::none();   ///< OBJ seams as duplicated v, welded
   py::object file_vertices = py::none(), file_elements = py::none();   ///< the file's own v lines and faces
@@ -631,6 +646,8 @@ Python_mesh read_file(const std::string& path, const py::handle& weld)
   }
   if(!mesh.rest.empty()) m.rest = points_of(mesh.rest, columns(mesh.rest_dimension));
   if(mesh.has_fixed) m.fixed = ids_vector(mesh.fixed);
+  if(!mesh.edges.empty()) m.edges = ids_of(mesh.edges, 2);
+  if(!mesh.corners.empty()) m.corners = ids_vector(mesh.corners);
   if(mesh.has_welded_vertices()) {
     m.welded_vertex_of_file_vertex = ids_vector(mesh.welded_vertex_of_file_vertex);
     m.file_vertices = points_of(mesh.file_vertices, 3);
@@ -819,6 +836,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
                      "slide_boundary=True: the largest distance of a sliding vertex from its target; -1 otherwise")
     .MU_RESULT_FIELD(boundary_moved_onto_target,
                      "slide_boundary=True: how far the boundary was moved onto target_surface (0 on its own); -1 otherwise")
+    .MU_RESULT_FIELD(feature_edges_inside, "slide_boundary=True: feature_edges given inside the mesh (no feature of its boundary)")
     .MU_RESULT_FIELD(continuation_steps, "steps of the continuation that ended locally invertible")
     .MU_RESULT_FIELD(continuation_motion, "fraction of the fixed vertices' motion its locally invertible steps reached")
     .MU_RESULT_FIELD(outer_iterations, "eps steps")
@@ -892,6 +910,10 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .def_readonly("rest_elements", &Python_mesh::rest_elements, "seamless maps: the surface's triangles; else None")
     .def_readonly("fixed", &Python_mesh::fixed, "ids of the fixed vertices the file lists (.input handles, the "
                                                 ".vtk 'fixed' point field), or None")
+    .def_readonly("edges", &Python_mesh::edges, "m x 2 int64: the file's edges (MEDIT Edges, Gmsh and VTK lines: "
+                                                "its meshing tool's feature curves, for feature_edges=), or None")
+    .def_readonly("corners", &Python_mesh::corners, "ids of the file's corners (MEDIT Corners and RequiredVertices, Gmsh "
+                                                    "and VTK points), or None")
     .def_readonly("point_fields", &Python_mesh::point_fields, ".vtk: the point scalars of one component but "
                                                               "'fixed', by name (int64 or float64); else empty")
     .def_readonly("cell_fields", &Python_mesh::cell_fields, ".vtk: the cell scalars of one component, by name")
@@ -914,8 +936,8 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("solver"), py::arg("phantoms"), py::arg("continuation"), py::arg("continuation_steps"),
         py::arg("max_iterations"), py::arg("time_limit"), py::arg("threads"), py::arg("progress"),
         py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("optimize_quality"),
-        py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("target_surface"), py::arg("seam_translations"),
-        py::arg("out"));
+        py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("feature_edges"), py::arg("target_surface"),
+        py::arg("seam_translations"), py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));

@@ -32,7 +32,8 @@ __all__ = ["untangle", "check_local_invertibility", "read", "write", "project_on
 def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=None, solver="auto", phantoms=True,
              continuation="auto", continuation_steps=None, max_iterations=None, time_limit=None, threads=None,
              progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False,
-             slide_boundary=False, feature_angle=35.0, target_surface=None, kind=None, rest_elements=None,
+             slide_boundary=False, feature_angle=35.0, feature_edges=None, target_surface=None, kind=None,
+             rest_elements=None,
              seam_translations="keep", out=None):
     """Moves the free vertices of a mesh until it is locally invertible.
 
@@ -113,7 +114,13 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         curves meet or end stay.  In 2D along the boundary polyline.  Every
         sliding vertex ends on its target: ``result.max_distance_to_target``.
     feature_angle : float in (0, 90]
-        Degrees, with ``slide_boundary`` (default 35).
+        Degrees, with ``slide_boundary`` (default 35; 90: only the
+        ``feature_edges`` are features).
+    feature_edges : array_like, m x 2 int, optional
+        With ``slide_boundary``: edges (vertex id pairs) that are feature
+        edges besides those of the angle, as a meshing tool lists them
+        (``Mesh.edges`` of a MEDIT, Gmsh or VTK file).  An edge inside the
+        mesh is none: ``result.feature_edges_inside`` counts them.
     target_surface : tuple (points, triangles), optional
         With ``slide_boundary`` (3D): an n x 3 float array and an m x 3 int
         array, the triangle surface the boundary slides on instead of its
@@ -154,7 +161,7 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
                            time_limit=time_limit, threads=threads, progress=progress, callback=callback,
                            refine=refine, refine_budget=refine_budget, optimize_quality=optimize_quality,
                            slide_boundary=slide_boundary, feature_angle=feature_angle,
-                           target_surface=target_surface, seam_translations=seam_translations, out=out)
+                           feature_edges=feature_edges, target_surface=target_surface, seam_translations=seam_translations, out=out)
 
 
 def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None):

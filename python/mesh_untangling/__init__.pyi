@@ -70,6 +70,7 @@ class Result:
     sliding_rounds: int
     max_distance_to_target: float
     boundary_moved_onto_target: float
+    feature_edges_inside: int
     max_shape_distortion: float
     mean_shape_distortion: float
     max_volume_distortion: float
@@ -118,6 +119,8 @@ class Mesh:
     rest: Optional[npt.NDArray[np.float64]]
     rest_elements: Optional[npt.NDArray[np.int64]]
     fixed: Optional[npt.NDArray[np.int64]]
+    edges: Optional[npt.NDArray[np.int64]]
+    corners: Optional[npt.NDArray[np.int64]]
     point_fields: dict[str, npt.NDArray]
     cell_fields: dict[str, npt.NDArray]
     welded_vertex_of_file_vertex: Optional[npt.NDArray[np.int64]]
@@ -135,7 +138,8 @@ def untangle(vertices: ArrayLike, elements: ArrayLike, *, rest: Optional[ArrayLi
              progress: Optional[Callable[[float], Optional[bool]]] = None,
              callback: Optional[Callable[[Step], Optional[bool]]] = None, refine: bool = False,
              refine_budget: Optional[int] = None, optimize_quality: bool = False, slide_boundary: bool = False,
-             feature_angle: float = 35.0, target_surface: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+             feature_angle: float = 35.0, feature_edges: Optional[ArrayLike] = None,
+             target_surface: Optional[Tuple[ArrayLike, ArrayLike]] = None,
              kind: Optional[Kind] = None,
              rest_elements: Optional[ArrayLike] = None, seam_translations: Literal["keep", "free"] = "keep",
              out: Optional[npt.NDArray[np.float64]] = None) -> Tuple[npt.NDArray[np.float64], Result]: ...

@@ -440,6 +440,41 @@ class Kinds(unittest.TestCase):
             mu.untangle(mesh.vertices, mesh.elements, rest=rest, slide_boundary=True,
                         target_surface=(box, [[0, 1, 999]]))
 
+    def test_feature_edges_are_curves(self):
+        # the tangled cube at 90 degrees (no feature by the angle), its box's
+        # edges given: they are curves, the box's corners where they meet
+        with tempfile.TemporaryDirectory() as folder:
+            make("cube", 4, 0.6, 1, os.path.join(folder, "cube.vtk"))
+            mesh = mu.read(os.path.join(folder, "cube.vtk"))
+            rest = mu.read(os.path.join(folder, "cube-rest.vtk")).vertices
+        pairs = mesh.elements[:, [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]].reshape(-1, 2)
+        on_side = (rest == 0) | (rest == 1)
+        same = rest[pairs[:, 0]] == rest[pairs[:, 1]]
+        box_edges = np.unique(np.sort(pairs[((on_side[pairs[:, 0]] & same).sum(axis=1) >= 2)], axis=1), axis=0)
+        slid, result = mu.untangle(mesh.vertices, mesh.elements, rest=rest, slide_boundary=True, feature_angle=90,
+                                   feature_edges=box_edges)
+        self.assertTrue(result.is_locally_invertible, result.message)
+        self.assertEqual((result.vertices_sliding_on_curves, result.corner_vertices_held, result.feature_edges_inside),
+                         (36, 8, 0))
+        _, plain = mu.untangle(mesh.vertices, mesh.elements, rest=rest, slide_boundary=True, feature_angle=90)
+        self.assertEqual(plain.vertices_sliding_on_curves, 0)
+        with self.assertRaisesRegex(ValueError, "feature_edges needs slide_boundary=True"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=rest, feature_edges=box_edges)
+        with self.assertRaisesRegex(ValueError, "feature_edges row 1: vertex 999"):
+            mu.untangle(mesh.vertices, mesh.elements, slide_boundary=True, feature_edges=[[0, 1], [2, 999]])
+        with self.assertRaisesRegex(ValueError, "feature_edges must be m x 2"):
+            mu.untangle(mesh.vertices, mesh.elements, slide_boundary=True, feature_edges=[[0, 1, 2]])
+
+    def test_a_files_edges_and_corners(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "tet.mesh")
+            with open(path, "w") as f:
+                f.write("MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                        "Tetrahedra\n1\n1 2 3 4 1\nEdges\n2\n1 2 1\n2 3 1\nCorners\n1\n2\nEnd\n")
+            mesh = mu.read(path)
+        self.assertTrue(np.array_equal(mesh.edges, [[0, 1], [1, 2]]))
+        self.assertTrue(np.array_equal(mesh.corners, [1]))
+
 
 class Files(unittest.TestCase):
     def setUp(self):
