@@ -369,7 +369,7 @@ untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
     sliding ? MUI::complex_feature_edges(c3t3, cells) : std::vector<std::array<std::size_t, 2>>();
   return MUI::untangle_triangulation_cells<ConcurrencyTag>(
     cells, error,
-    [&] { return sliding ? MUI::complex_interface_flags(c3t3, cells) : MUI::complex_boundary_flags(c3t3, cells); },
+    [&] { return MUI::complex_fixed_flags(c3t3, cells, sliding); },
     Mesh_untangling::parameters::feature_edges(std::cref(features), np));
 }
 

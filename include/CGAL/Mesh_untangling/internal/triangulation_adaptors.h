@@ -174,13 +174,16 @@ std::vector<bool> convex_hull_flags(const Triangulation& tr, const Triangulation
   return flags;
 }
 
-/// The default fixed vertices of a Mesh_complex_3_in_triangulation_3: those on
-/// its facets (the boundary and interfaces of its subdomains), its edges (the
-/// features) and its corners, and those on a facet between a cell in the
-/// complex and one outside (the boundary of the cells, where no facet was marked).
+/// The default fixed vertices of a Mesh_complex_3_in_triangulation_3: its
+/// corners and the vertices of its facets (the boundary and interfaces of
+/// its subdomains), of its edges (the features) and of the facets between a
+/// cell in the complex and one outside (the boundary of the cells, where no
+/// facet was marked).  When its boundary is `sliding`: its corners and the
+/// vertices of the facets between two of its cells (the interfaces, which
+/// do not slide) only.
 template <typename C3T3>
-std::vector<bool> complex_boundary_flags(const C3T3& c3t3,
-                                         const Triangulation_cells<typename C3T3::Triangulation>& cells)
+std::vector<bool> complex_fixed_flags(const C3T3& c3t3, const Triangulation_cells<typename C3T3::Triangulation>& cells,
+                                      bool sliding)
 {
   std::vector<bool> flags(cells.number_of_vertices(), false);
   const auto mark = [&](auto v) {
@@ -189,35 +192,19 @@ std::vector<bool> complex_boundary_flags(const C3T3& c3t3,
   const auto mark_facet = [&](auto c, int i) {
     for(int k = 1; k < 4; ++k) mark(c->vertex((i + k) & 3));
   };
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) mark_facet(f->first, f->second);
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    mark(typename C3T3::Triangulation::Vertex_handle(v));
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    if(!sliding || (c3t3.is_in_complex(f->first) && c3t3.is_in_complex(f->first->neighbor(f->second))))
+      mark_facet(f->first, f->second);
+  if(sliding) return flags;
   for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
     mark(e->first->vertex(e->second));
     mark(e->first->vertex(e->third));
   }
-  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
-    mark(typename C3T3::Triangulation::Vertex_handle(v));
   for(auto c : cells.cells())
     for(int i = 0; i < 4; ++i)
       if(!c3t3.is_in_complex(c->neighbor(i))) mark_facet(c, i);
-  return flags;
-}
-
-/// The fixed vertices of a Mesh_complex_3_in_triangulation_3 whose boundary
-/// slides: its corners and the vertices of the facets between two of its
-/// cells (interfaces between subdomains, which do not slide).
-template <typename C3T3>
-std::vector<bool> complex_interface_flags(const C3T3& c3t3,
-                                          const Triangulation_cells<typename C3T3::Triangulation>& cells)
-{
-  std::vector<bool> flags(cells.number_of_vertices(), false);
-  const auto mark = [&](auto v) {
-    if(const auto i = cells.find(v)) flags[*i] = true;
-  };
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-    if(c3t3.is_in_complex(f->first) && c3t3.is_in_complex(f->first->neighbor(f->second)))
-      for(int k = 1; k < 4; ++k) mark(f->first->vertex((f->second + k) & 3));
-  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
-    mark(typename C3T3::Triangulation::Vertex_handle(v));
   return flags;
 }
 
