@@ -121,6 +121,34 @@ print(shared[0])
 PY
 cp cube-2.0.vtk moved.0.vtk
 expect_refusal disagree "the parts must agree on every vertex they share" --parts moved.%.vtk
+# an element that both parts list, and one part's two elements of one id
+python3 - << 'PY'
+import legacy_vtk
+def cell_ids(lines):   # (the line of the cell field global_id's first value, the number of cells, the lines they take)
+    c = next(i for i, l in enumerate(lines) if l.startswith('CELL_DATA'))
+    k = next(i for i, l in enumerate(lines) if i > c and l.startswith('SCALARS global_id')) + 2
+    n, words, end = int(lines[c].split()[1]), [], k
+    while len(words) < n:
+        words += lines[end].split()
+        end += 1
+    return k, end, [int(float(x)) for x in words]
+def first_ids(lines, count):
+    return cell_ids(lines)[2][:count]
+def with_ids(lines, ids):
+    k, end, values = cell_ids(lines)
+    values[:len(ids)] = ids
+    return lines[:k] + [str(g) for g in values] + lines[end:]
+a, _, _ = legacy_vtk.read('cube-2.0.vtk')
+b, _, _ = legacy_vtk.read('cube-2.1.vtk')
+taken = first_ids(a, 1)[0]
+open('twice.1.vtk', 'w').write('\n'.join(with_ids(b, [taken])) + '\n')
+mine = first_ids(b, 1)[0]
+open('again.1.vtk', 'w').write('\n'.join(with_ids(b, [mine, mine])) + '\n')
+PY
+cp cube-2.0.vtk twice.0.vtk
+cp cube-2.0.vtk again.0.vtk
+expect_refusal element-twice "is listed by processes 0 and 1: each element must be one process's" --parts twice.%.vtk
+expect_refusal element-id-again "process 1: tetrahedra 0 and 1 have the same global id" --parts again.%.vtk
 parts join-missing join cube-2.%.vtk 3 joined-missing.vtk
 check "join of a missing part: exit 2" test "$(cat join-missing.rc)" = 2
 check "join of a missing part: names the file" grep -qF "cube-2.2.vtk: file not found" join-missing.out

@@ -38,6 +38,21 @@ struct Part_input
   std::vector<std::size_t> global_element;   // per mesh element of `in`
 };
 
+/// "`what` i and j have the same global id g" for the first two of `ids`
+/// that do (by id); empty when no two do.
+inline std::string repeated_global_id(const std::vector<std::size_t>& ids, const std::string& what)
+{
+  std::vector<std::size_t> by_id(ids.size());
+  std::iota(by_id.begin(), by_id.end(), std::size_t(0));
+  std::sort(by_id.begin(), by_id.end(),
+            [&](std::size_t a, std::size_t b) { return std::make_pair(ids[a], a) < std::make_pair(ids[b], b); });
+  for(std::size_t i = 1; i < by_id.size(); ++i)
+    if(ids[by_id[i]] == ids[by_id[i - 1]])
+      return what + " " + std::to_string(by_id[i - 1]) + " and " + std::to_string(by_id[i]) + " have the same global id " +
+             std::to_string(ids[by_id[i]]);
+  return std::string();
+}
+
 /// Why a caller's part is no valid part, in words; empty if it is.  (Its
 /// vertices and elements are named by their indices in the part.)
 template <int d>
@@ -50,16 +65,8 @@ std::string part_input_refusal(const Part_input<d>& p)
       return e.what();
     }
   }
-  std::vector<std::size_t> by_id(p.global_vertex.size());
-  std::iota(by_id.begin(), by_id.end(), std::size_t(0));
-  std::sort(by_id.begin(), by_id.end(), [&](std::size_t a, std::size_t b) {
-    return std::make_pair(p.global_vertex[a], a) < std::make_pair(p.global_vertex[b], b);
-  });
-  for(std::size_t i = 1; i < by_id.size(); ++i)
-    if(p.global_vertex[by_id[i]] == p.global_vertex[by_id[i - 1]])
-      return "points " + std::to_string(by_id[i - 1]) + " and " + std::to_string(by_id[i]) + " have the same global id " +
-             std::to_string(p.global_vertex[by_id[i]]);
-  return std::string();
+  const std::string points = repeated_global_id(p.global_vertex, "points");
+  return points.empty() ? repeated_global_id(p.global_element, d == 2 ? "triangles" : "tetrahedra") : points;
 }
 
 template <int d>

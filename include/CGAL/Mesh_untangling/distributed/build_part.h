@@ -169,6 +169,13 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
                          ? std::size_t(std::lower_bound(own_ids.begin(), own_ids.end(), mine.global_vertex[v]) - own_ids.begin())
                          : replies[owner[v]][next[owner[v]]++];
   }
+  // (an element is one process's: one that two list would be counted, moved and judged twice)
+  const std::vector<int> element_lister = lowest_listers(mine.global_element, comm);
+  for(std::size_t k = 0; k < mesh_m && disagreement.empty(); ++k)
+    if(element_lister[k] != rank)
+      disagreement = "element " + std::to_string(mine.global_element[k]) + " is listed by processes " +
+                     std::to_string(element_lister[k]) + " and " + std::to_string(rank) + ": each element must be one "
+                     "process's";
   refusal = first_refusal(disagreement, comm);
   if(!refusal.empty()) return Rank_part<d>();
 
