@@ -28,6 +28,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -295,7 +296,7 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
     if(!defect.empty())
       fail_at_byte(file, block.offset_of(at), defect);
     at += 1 + cell.size;
-    cells.push_back(cell);
+    cells.push_back(std::move(cell));
   }
   if(at != size)
     fail_at_byte(file, block.offset_of(at), "CELLS announces a size of " + std::to_string(size) + " but its "
