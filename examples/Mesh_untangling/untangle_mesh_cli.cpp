@@ -793,7 +793,7 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
                    r.vertices_sliding_on_surfaces, r.vertices_sliding_on_curves, r.corner_vertices_held,
                    r.max_distance_to_target, r.max_distance_to_target / std::max(1e-300, map_diagonal(mesh)),
                    r.sliding_rounds, r.sliding_rounds == 1 ? "" : "s");
-    if(r.max_distance_to_target >= 0 && !mesh.edges.empty())
+    if(args.slide_boundary && !mesh.edges.empty())
       std::fprintf(stderr, "feature edges: %zu given by %s, %zu of them inside the mesh (no feature of its boundary)\n",
                    mesh.edges.size(), args.input.c_str(), r.feature_edges_inside);
     if(!args.target_surface.empty() && r.boundary_moved_onto_target >= 0)
