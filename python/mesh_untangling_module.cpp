@@ -913,7 +913,8 @@ PYBIND11_MODULE(_mesh_untangling, m)
     .def_readonly("edges", &Python_mesh::edges, "m x 2 int64: the file's edges (MEDIT Edges, Gmsh and VTK lines: "
                                                 "its meshing tool's feature curves, for feature_edges=), or None")
     .def_readonly("corners", &Python_mesh::corners, "ids of the file's corners (MEDIT Corners and RequiredVertices, Gmsh "
-                                                    "and VTK points), or None")
+                                                    "and VTK points), or None; untangle_mesh --slide-boundary keeps "
+                                                    "them in place: here, add them to fixed=")
     .def_readonly("point_fields", &Python_mesh::point_fields, ".vtk: the point scalars of one component but "
                                                               "'fixed', by name (int64 or float64); else empty")
     .def_readonly("cell_fields", &Python_mesh::cell_fields, ".vtk: the cell scalars of one component, by name")
