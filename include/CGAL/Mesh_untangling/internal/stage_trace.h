@@ -12,6 +12,7 @@
 #ifdef CGAL_MESH_UNTANGLING_TRACE_STAGES
 #include <chrono>
 #include <cstdio>
+#include <sys/resource.h>
 
 namespace CGAL {
 namespace Mesh_untangling {
@@ -23,9 +24,14 @@ inline void trace_stage(const char* name)
   static const Clock::time_point first = Clock::now();
   static Clock::time_point last = first;
   const Clock::time_point now = Clock::now();
-  std::fprintf(stderr, "[stage] %-40s %8.3f s  (+%.3f s)\n", name, std::chrono::duration<double>(now - first).count(),
-               std::chrono::duration<double>(now - last).count());
+  static long last_faults = 0;   // (page faults: a first touch of freshly mapped memory costs as much as work)
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  std::fprintf(stderr, "[stage] %-40s %8.3f s  (+%.3f s, +%ld page faults)\n", name,
+               std::chrono::duration<double>(now - first).count(), std::chrono::duration<double>(now - last).count(),
+               usage.ru_minflt - last_faults);
   last = now;
+  last_faults = usage.ru_minflt;
 }
 
 } // namespace internal
