@@ -158,15 +158,15 @@ namespace internal {
 /// lists them (non_manifold, non_manifold_vertex_ids, non_manifold_edges),
 /// without a map: no angle is measured, so it costs the visit of the stars
 /// alone (on a cube of a million tetrahedra, a third of the whole check).
+/// `stars` are those of the first simplices, the mesh's (build_vertex_stars()).
 template <std::size_t D>
 Invertibility_report non_manifold_stars(std::size_t number_of_vertices,
                                         const std::vector<std::array<std::size_t, D + 1>>& simplices,
-                                        const std::vector<int>& reference_orientation)
+                                        const std::vector<int>& reference_orientation, const Vertex_stars& stars)
 {
   using Point = std::conditional_t<D == 2, Vec2, Vec3>;
   const std::vector<Point> no_positions;
   const std::vector<signed char> no_signs;
-  const Vertex_stars stars = build_vertex_stars(number_of_vertices, simplices);
   Invertibility_report report;
   const std::vector<char> no_fixed;
   if constexpr(D == 3)

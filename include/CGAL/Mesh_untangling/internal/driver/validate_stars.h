@@ -29,7 +29,9 @@ void validate_stars(const Untangling_input<d>& in, const Problem_kind<d>& kind)
   if(in.has_cells() && in.cell_first_corner.back() != in.number_of_mesh_elements())
     throw std::invalid_argument(std::to_string(in.number_of_mesh_elements()) + " corner simplices for cells of " +
                                 std::to_string(in.cell_first_corner.back()));
-  if(kind.has_simplex_facets()) validate_manifold_facets<d>(in);
+  // (built once for both checks: a tenth of a second on a million tetrahedra)
+  const Vertex_stars stars = build_vertex_stars(in.number_of_mesh_vertices(), in.elements, in.number_of_mesh_elements());
+  if(kind.has_simplex_facets()) validate_manifold_facets<d>(in, stars);
   std::size_t degenerate = 0;
   const std::vector<int> orientation = target_orientations<d>(in, &degenerate);
   if(!in.targets.empty() && degenerate == in.number_of_mesh_elements())
@@ -37,10 +39,7 @@ void validate_stars(const Untangling_input<d>& in, const Problem_kind<d>& kind)
                                 "untangle toward");
   if(!kind.has_checkable_stars()) return;
   // (the stars' combinatorics only: the map is checked after the run)
-  const std::size_t m = in.number_of_mesh_elements();
-  const std::vector<std::array<std::size_t, d + 1>> mesh(in.elements.begin(), in.elements.begin() + m);
-  const Invertibility_report report = non_manifold_stars<d>(in.number_of_mesh_vertices(), mesh,
-                                                            std::vector<int>(orientation.begin(), orientation.begin() + m));
+  const Invertibility_report report = non_manifold_stars<d>(in.number_of_mesh_vertices(), in.elements, orientation, stars);
   if(!report.non_manifold_vertex_ids.empty())
     throw std::invalid_argument("the star of vertex " + std::to_string(report.non_manifold_vertex_ids.front()) +
                                 " is not a disk or a half-disk (its elements meet there only at the vertex, or "
