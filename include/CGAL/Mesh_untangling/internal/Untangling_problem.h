@@ -582,7 +582,8 @@ public:
 
   Target operator()(std::size_t k) const
   {
-    Target t = in_.targets.empty() ? regular_simplex<d>() : in_.targets[k];
+    static const Target regular = regular_simplex<d>();   // (a pow and a determinant: once, not per element)
+    Target t = in_.targets.empty() ? regular : in_.targets[k];
     if(exponent_ != 0)
       for(auto& p : t) p = p.unaryExpr([this](double c) { return std::ldexp(c, -exponent_); });
     if(map_is_negative_) std::swap(t[0], t[1]);
