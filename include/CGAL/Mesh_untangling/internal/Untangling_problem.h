@@ -234,20 +234,25 @@ double simplex_volume(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
   return E.determinant() / (d == 2 ? 2. : 6.);
 }
 
-/// Regular simplex of unit volume, positively oriented.
+/// Regular simplex of unit volume, positively oriented.  Built once (a pow
+/// and a determinant) and copied: it stands in for every element without a
+/// target, a million calls on a large mesh.
 template <int d>
 std::array<Eigen::Matrix<double, d, 1>, d + 1> regular_simplex()
 {
-  std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
-  if constexpr(d == 2) {
-    s[0] << 0, 0;  s[1] << 1, 0;  s[2] << 0.5, std::sqrt(3.) / 2;
-  } else {
-    s[0] << 1, 1, 1;  s[1] << 1, -1, -1;  s[2] << -1, 1, -1;  s[3] << -1, -1, 1;
-  }
-  const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
-  for(auto& p : s) p *= factor;
-  if(simplex_volume<d>(s) < 0) std::swap(s[0], s[1]);
-  return s;
+  static const std::array<Eigen::Matrix<double, d, 1>, d + 1> unit = [] {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> s;
+    if constexpr(d == 2) {
+      s[0] << 0, 0;  s[1] << 1, 0;  s[2] << 0.5, std::sqrt(3.) / 2;
+    } else {
+      s[0] << 1, 1, 1;  s[1] << 1, -1, -1;  s[2] << -1, 1, -1;  s[3] << -1, -1, 1;
+    }
+    const double factor = std::pow(std::abs(simplex_volume<d>(s)), -1. / d);
+    for(auto& p : s) p *= factor;
+    if(simplex_volume<d>(s) < 0) std::swap(s[0], s[1]);
+    return s;
+  }();
+  return unit;
 }
 
 /// Mean ratio quality of a simplex: 1 for a regular one, 0 for a flat one.
@@ -582,8 +587,7 @@ public:
 
   Target operator()(std::size_t k) const
   {
-    static const Target regular = regular_simplex<d>();   // (a pow and a determinant: once, not per element)
-    Target t = in_.targets.empty() ? regular : in_.targets[k];
+    Target t = in_.targets.empty() ? regular_simplex<d>() : in_.targets[k];
     if(exponent_ != 0)
       for(auto& p : t) p = p.unaryExpr([this](double c) { return std::ldexp(c, -exponent_); });
     if(map_is_negative_) std::swap(t[0], t[1]);
