@@ -145,12 +145,11 @@ inline std::string add_VTK_element(VTK_elements& elements, std::size_t i, std::s
                                    std::size_t number_of_points, bool& in_vertices)
 {
   in_vertices = false;
-  const std::string what = VTK_cell_what(i);
   if(is_VTK_edge_or_corner_type(type))
     return add_VTK_edges_or_corners(elements, i, type, cell, number_of_points, in_vertices);
   const std::size_t size = VTK_type_size(type);
   if(size == 0)
-    return what + " has VTK type " + std::to_string(type) + "; only triangles (5), tetrahedra (10), "
+    return VTK_cell_what(i) + " has VTK type " + std::to_string(type) + "; only triangles (5), tetrahedra (10), "
                   "quadrilaterals (9), hexahedra (12), wedges (13) and pyramids (14) are supported, "
                   "with vertices (1), polyvertices (2), lines (3) and polylines (4) as corners and edges";
   const Solid_cell_kind* kind = VTK_solid_kind(type);
@@ -159,18 +158,18 @@ inline std::string add_VTK_element(VTK_elements& elements, std::size_t i, std::s
     elements.first_type = type;
     elements.first_element = i;
   } else if(kind == nullptr ? type != elements.first_type : VTK_solid_kind(elements.first_type) == nullptr) {
-    return "mixed cell types: " + what + " is a " + VTK_type_name(type) + " but " + VTK_cell_what(elements.first_element)
-           + " is a " + VTK_type_name(elements.first_type) + "; only one face type, or solid cells (tetrahedra, "
+    return "mixed cell types: " + VTK_cell_what(i) + " is a " + VTK_type_name(type) + " but "
+           + VTK_cell_what(elements.first_element) + " is a " + VTK_type_name(elements.first_type) + "; only one face type, or solid cells (tetrahedra, "
            "pyramids, wedges, hexahedra) together, are supported";
   }
   if(size != cell.size)
-    return what + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
+    return VTK_cell_what(i) + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
            + std::to_string(cell.size) + " vertices";
   const std::string defect = simplex_defect(cell.ids, static_cast<int>(size), number_of_points, 0);
   if(!defect.empty()) {
     in_vertices = true;
     // (the kind last: the message keeps the form "cell i: ..." that scripts match)
-    return what + ": " + defect + " (" + VTK_type_name(type) + ")";
+    return VTK_cell_what(i) + ": " + defect + " (" + VTK_type_name(type) + ")";
   }
   Mesh_file& mesh = elements.mesh;
   if(kind != nullptr) {

@@ -22,6 +22,7 @@
 #include <CGAL/Mesh_untangling/IO/internal/token_conversion.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -38,10 +39,14 @@ namespace internal {
 
 inline bool is_VTK_section(std::string_view word)
 {
-  static const char* const sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA", "FIELD",
-                                         "METADATA", "SCALARS", "COLOR_SCALARS", "LOOKUP_TABLE", "VECTORS",
-                                         "NORMALS", "TEXTURE_COORDINATES", "TENSORS"};
-  for(const char* s : sections)
+  // (asked of every number of the file: a number is no keyword, and the
+  // keywords' lengths are known without a strlen each)
+  if(word.empty() || !std::isalpha(static_cast<unsigned char>(word[0])))
+    return false;
+  static constexpr std::string_view sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA",
+                                                  "FIELD", "METADATA", "SCALARS", "COLOR_SCALARS", "LOOKUP_TABLE",
+                                                  "VECTORS", "NORMALS", "TEXTURE_COORDINATES", "TENSORS"};
+  for(std::string_view s : sections)
     if(same_keyword(word, s))
       return true;
   return false;
@@ -259,16 +264,21 @@ inline void read_VTK_points(Text_file& file, Mesh_file& mesh, bool binary = fals
 // (its vertex ids are checked with its type: add_VTK_element())
 inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
 {
+  // (the messages are built only on failure: this runs once per cell of the file)
   Token size_token = next_VTK_value(file, "CELLS", i, count, "cells");
-  if(same_keyword(size_token.text, "OFFSETS"))
-    file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
-  const std::string what = VTK_cell_what(i);
-  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, to_size(file, size_token, "vertex count of " + what), size_token.line, 0, {}};
+  std::size_t size = 0;
+  if(!parse_size(size_token.text, size)) {
+    if(same_keyword(size_token.text, "OFFSETS"))
+      file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
+    to_size(file, size_token, "vertex count of " + VTK_cell_what(i));   // throws
+  }
+  VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, size, size_token.line, 0, {}};
   const std::string defect = VTK_vertex_count_defect(i, cell.size);
   if(!defect.empty())
     file.fail(cell.line, defect);
   for(std::size_t c = 0; c < cell.size; ++c)
-    cell.set_id(c, to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"), "vertex index of " + what));
+    cell.set_id(c, to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"),
+                           [i] { return "vertex index of " + VTK_cell_what(i); }));
   return cell;
 }
 
@@ -352,7 +362,7 @@ inline std::vector<std::size_t> read_VTK_cell_types(Text_file& file, const std::
   } else {
     for(std::size_t i = 0; i < count; ++i) {
       Token t = next_VTK_value(file, "CELL_TYPES", i, count, "types");
-      const std::size_t type = to_size(file, t, "type of " + VTK_cell_what(i));
+      const std::size_t type = to_size(file, t, [i] { return "type of " + VTK_cell_what(i); });
       const std::string defect = add_VTK_element(elements, i, type, cells[i], mesh.map.size(), in_vertices);
       if(!defect.empty())
         file.fail(in_vertices ? cells[i].line : t.line, defect);

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -50,6 +51,17 @@ inline std::size_t to_size(const Text_file& file, const Token& token, const std:
   std::size_t value = 0;
   if(!parse_size(token.text, value))
     file.fail(token.line, what + " is not a non-negative integer: " + quote_token(token.text));
+  return value;
+}
+
+// The same, with the name of the value built only on failure: for the
+// values read once per element of a file (a million strings otherwise).
+template <class Name, class = decltype(std::string(std::declval<const Name&>()()))>
+std::size_t to_size(const Text_file& file, const Token& token, const Name& what)
+{
+  std::size_t value = 0;
+  if(!parse_size(token.text, value))
+    to_size(file, token, std::string(what()));   // throws
   return value;
 }
 
