@@ -19,11 +19,22 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// A copy of `in` but for its targets, a tenth of a gigabyte for a million
+/// tetrahedra, which element_figures() takes from the run's end.
+template <int d>
+Untangling_input<d> copy_without_targets(Untangling_input<d>& in)
+{
+  std::vector<typename Untangling_input<d>::Target> targets = std::move(in.targets);
+  Untangling_input<d> copy = in;
+  in.targets = std::move(targets);
+  return copy;
+}
+
 /// Per element of `result` (the mesh's, then the phantoms'), its figures
 /// against its target scaled as make_untangling_problem() scales it on
 /// `given` (the input the run started from: the scale of matched targets
-/// comes from the given map), with the targets the run ended with (default
-/// ones when phantoms needed them) and its phantoms.  Elements with fixed
+/// comes from the given map), with the targets the run ended with (in
+/// `given`: default ones when phantoms needed them) and its phantoms.  Elements with fixed
 /// vertices only, which the solver leaves out, are measured too.  J comes
 /// from edge vectors in the user's coordinates: no cancellation far from
 /// the origin.
@@ -32,7 +43,6 @@ std::vector<Element_figures> element_figures(Untangling_input<d> given, const Un
                                              const Phantom_elements<d>& phantoms, Target_scaling scaling)
 {
   using Matrix = Eigen::Matrix<double, d, d>;
-  given.targets = result.targets;
   append_phantom_elements<d>(given, phantoms);
   scaling = resolved_target_scaling<d>(given, scaling);
   given.is_fixed.clear();

@@ -174,6 +174,13 @@ Untangling_input<d> make_soup_input(const PointRange& points, const SimplexRange
                                     const FixedMap& fixed, const RestRange& rest, bool sliding)
 {
   Untangling_input<d> in;
+  // (reserved: a million targets grown by doubling are copied twice over)
+  const auto size_of = [](const auto& range) { return std::size_t(std::distance(std::begin(range), std::end(range))); };
+  const std::size_t m = size_of(simplices);
+  in.positions.reserve(size_of(points));
+  in.is_fixed.reserve(in.positions.capacity());
+  in.elements.reserve(m);
+  if constexpr(is_given<RestRange>()) in.targets.reserve(m);
   std::size_t v = 0;
   for(const auto& p : points) {
     in.positions.push_back(to_vector<d>(p));

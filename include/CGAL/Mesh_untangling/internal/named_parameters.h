@@ -126,8 +126,8 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
   constexpr bool wants_figures =
     is_given_parameter<NamedParameters, internal_np::mesh_untangling_element_figures_output_t>();
 
-  Untangling_input<d> given;
-  if constexpr(wants_figures) given = input;
+  Untangling_input<d> given;   // (without targets: the figures take those the run ended with)
+  if constexpr(wants_figures) given = copy_without_targets(input);
   constexpr bool wants_added =
     is_given_parameter<NamedParameters, internal_np::mesh_untangling_added_vertices_output_t>();
 
@@ -146,7 +146,8 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
   if constexpr(wants_figures) {
     // A refined result is measured on the refined mesh; its boundary, and so
     // the volume that matched targets are scaled to, is the input's.
-    if(!added.empty()) given = input;
+    if(!added.empty()) given = copy_without_targets(input);
+    given.targets = std::move(input.targets);   // (the input's last use: it was written back)
     auto out = get_parameter(np, internal_np::mesh_untangling_element_figures_output);
     for(const Element_figures& f : element_figures<d>(std::move(given), input, phantoms, options.scaling)) *out++ = f;
   }
