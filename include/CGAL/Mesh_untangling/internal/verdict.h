@@ -26,12 +26,21 @@ namespace Mesh_untangling {
 namespace internal {
 
 template <int d>
-std::vector<std::array<double, d>> as_arrays(const std::vector<Eigen::Matrix<double, d, 1>>& points)
+std::vector<std::array<double, d>> as_arrays(const std::vector<Eigen::Matrix<double, d, 1>>& points, std::size_t count)
 {
-  std::vector<std::array<double, d>> out(points.size());
-  for(std::size_t v = 0; v < points.size(); ++v)
+  std::vector<std::array<double, d>> out(count);
+  for(std::size_t v = 0; v < count; ++v)
     for(int c = 0; c < d; ++c) out[v][c] = points[v][c];
   return out;
+}
+
+/// `v` when it holds `count` items, else its first `count` copied to `storage`.
+template <class T>
+const std::vector<T>& leading(const std::vector<T>& v, std::size_t count, std::vector<T>& storage)
+{
+  if(v.size() == count) return v;
+  storage.assign(v.begin(), v.begin() + count);
+  return storage;
 }
 
 /// Distortion figures of the current map (over the mesh elements in the energy).
@@ -63,12 +72,14 @@ Invertibility_report check_mesh_part(const Untangling_input<d>& in, const std::v
                                      const Check& check)
 {
   const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
-  const std::vector<Eigen::Matrix<double, d, 1>> positions(in.positions.begin(), in.positions.begin() + n);
-  const std::vector<std::array<std::size_t, d + 1>> elements(in.elements.begin(), in.elements.begin() + m);
-  const std::vector<int> orientation(reference_orientation.begin(), reference_orientation.begin() + m);
+  // (without phantoms the arrays are the input's own: no copy of a mesh's worth per verdict)
+  std::vector<std::array<std::size_t, d + 1>> element_storage;
+  std::vector<int> orientation_storage;
+  const auto& elements = leading(in.elements, m, element_storage);
+  const auto& orientation = leading(reference_orientation, m, orientation_storage);
   std::vector<bool> fixed(n, false);
   std::copy_n(in.is_fixed.begin(), std::min(n, in.is_fixed.size()), fixed.begin());
-  return check(as_arrays<d>(positions), elements, orientation, fixed);
+  return check(as_arrays<d>(in.positions, n), elements, orientation, fixed);
 }
 
 /// Only what the element orientations decide (the inverted elements of the
