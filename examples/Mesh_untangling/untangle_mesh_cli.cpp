@@ -678,6 +678,7 @@ struct Run
 {
   std::string fixed_source;
   std::vector<bool> fixed;
+  std::vector<int> orientation;   // of the simplices, against the rest: shared by the checks before and after
   Checks checks;
   std::optional<Svg_map> input_picture;
   MU::Untangling_result result;
@@ -707,7 +708,7 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
   // the shortest text that reads back to the same doubles.
   std::optional<Map_fields> fields;
   if(lowercase_extension(args.output) == ".vtk" || lowercase_extension(args.output) == ".vtu") {
-    fields = measure_map(mesh, run.fixed, run.record);
+    fields = measure_map(mesh, run.fixed, run.record, run.orientation);
     if(args.refine) add_parent_fields(mesh, run.record, fields->points);
   }
   std::optional<Phantom_mesh> phantoms;
@@ -725,7 +726,8 @@ Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, co
                                 fields ? fields->points : IO::VTK_fields());
   });
   const Mesh_file written = as_written(args, mesh, to.output);
-  const Verdict verdict = fields && written.map == mesh.map ? fields->verdict : check_mesh_file(written, run.fixed);
+  const Verdict verdict =
+    fields && written.map == mesh.map ? fields->verdict : check_mesh_file(written, run.fixed, run.orientation);
   run.checks.boundary_after = check_boundary_of_mesh_file(written);
   if(!args.svg_input.empty())
     write_text_file(args.svg_input, to.svg_input, [&](std::ostream& out) { write_svg(out, *run.input_picture); });
@@ -1036,7 +1038,8 @@ int run(const Arguments& args)
   IO::internal::Output_files files;
   const Temporary_outputs temporaries = reserve_outputs(args, files);
 
-  run.checks.before = check_mesh_file(mesh, run.fixed);
+  if(mesh.cell_size == 0 && !mesh.has_corner_map()) run.orientation = reference_orientations(mesh);
+  run.checks.before = check_mesh_file(mesh, run.fixed, run.orientation);
   run.checks.boundary_before = check_boundary_of_mesh_file(mesh);
   if(!args.svg_input.empty()) {
     run.input_picture = svg_map_of(mesh, run.fixed);

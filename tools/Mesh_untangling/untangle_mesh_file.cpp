@@ -302,8 +302,16 @@ void add_coverings(Verdict& v, const std::vector<double>& covering)
   for(std::size_t vertex : v.overwound_vertex_ids) v.overwound_vertex_coverings.push_back(covering[vertex]);
 }
 
+/// `given` when it is the mesh's (one orientation per simplex), else reference_orientations(mesh) in `storage`.
+const std::vector<int>& orientations_of(const Mesh_file& mesh, const std::vector<int>& given, std::vector<int>& storage)
+{
+  if(given.size() == mesh.simplices.size()) return given;
+  storage = reference_orientations(mesh);
+  return storage;
+}
+
 template <int d>
-Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const std::vector<int>& given_orientation)
 {
   if(has_cells(mesh)) {
     const MU::Invertibility_report report = check_cells_of<d>(mesh, is_fixed);
@@ -317,7 +325,8 @@ Verdict check(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
   }
   const auto points = points_of<d>(mesh.map);
   const auto simplices = simplices_of<d>(mesh);
-  const std::vector<int> orientation = reference_orientations(mesh);
+  std::vector<int> storage;
+  const std::vector<int>& orientation = orientations_of(mesh, given_orientation, storage);
   Verdict v = verdict_of(MU::check_local_invertibility<d>(points, simplices, orientation, is_fixed));
   if(!v.overwound_vertex_ids.empty()) add_coverings(v, covering_numbers<d>(points, simplices, orientation));
   return v;
@@ -370,7 +379,7 @@ Map_fields measure_cells(const Mesh_file& mesh, const std::vector<bool>& is_fixe
   std::vector<std::size_t> first;
   MU::corner_simplex_indices<d>(cells_of<d>(mesh), n, &first);
   Map_fields f;
-  f.verdict = check<d>(mesh, is_fixed);
+  f.verdict = check<d>(mesh, is_fixed, {});
   std::vector<double> det(m), shape(m, 0.), volume(m, 0.);
   for(std::size_t c = 0; c < m; ++c) {
     det[c] = record.element_figures[first[c]].det_J;
@@ -393,12 +402,14 @@ Map_fields measure_cells(const Mesh_file& mesh, const std::vector<bool>& is_fixe
 }
 
 template <int d>
-Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
+Map_fields measure(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record,
+                   const std::vector<int>& given_orientation)
 {
   if(has_cells(mesh)) return measure_cells<d>(mesh, is_fixed, record);
   const auto points = points_of<d>(mesh.map);
   const auto simplices = simplices_of<d>(mesh);
-  const std::vector<int> orientation = reference_orientations(mesh);
+  std::vector<int> storage;
+  const std::vector<int>& orientation = orientations_of(mesh, given_orientation, storage);
   const auto report = MU::check_local_invertibility<d>(points, simplices, orientation, is_fixed);
   const std::size_t n = mesh.map.size(), m = simplices.size();
   const std::vector<double> covering = covering_numbers<d>(points, simplices, orientation);
@@ -645,11 +656,13 @@ Untangling_result untangle_mesh_file(Mesh_file& mesh, const std::vector<bool>& i
                                 : untangle<3>(mesh, is_fixed, options, record);
 }
 
-Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record)
+Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record,
+                       const std::vector<int>& orientation)
 {
   check_shape(mesh, is_fixed);
   check_record(mesh, record);
-  return element_dimension(mesh) == 2 ? measure<2>(mesh, is_fixed, record) : measure<3>(mesh, is_fixed, record);
+  return element_dimension(mesh) == 2 ? measure<2>(mesh, is_fixed, record, orientation)
+                                      : measure<3>(mesh, is_fixed, record, orientation);
 }
 
 Phantom_mesh phantom_mesh(const Mesh_file& mesh, const Run_record& record)
@@ -702,7 +715,7 @@ void write_mesh_file_with_fields(const std::string& path, const Mesh_file& mesh,
   MU::IO::write_mesh_file(path, own_domain);
 }
 
-Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed)
+Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const std::vector<int>& orientation)
 {
   if(mesh.has_corner_map()) {
     check_seamless_shape(mesh, is_fixed);
@@ -716,7 +729,7 @@ Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed
     }
   }
   check_shape(mesh, is_fixed);
-  return element_dimension(mesh) == 2 ? check<2>(mesh, is_fixed) : check<3>(mesh, is_fixed);
+  return element_dimension(mesh) == 2 ? check<2>(mesh, is_fixed, orientation) : check<3>(mesh, is_fixed, orientation);
 }
 
 Boundary_verdict check_boundary_of_mesh_file(const Mesh_file& mesh)

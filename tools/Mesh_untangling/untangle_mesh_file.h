@@ -199,7 +199,12 @@ struct Verdict
 /// For a per-corner map: the surface's verdict (every triangle positive in its
 /// chart, every vertex's star covering its prescribed angle once), through
 /// CGAL::Mesh_untangling::check_seamless_parameterization(); vertex ids are wedges.
-Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed);
+/// `orientation`: reference_orientations(mesh), when the caller has it (the
+/// checks before and after a run share it: on a million tetrahedra it costs
+/// a tenth of a gigabyte of targets and a third of a second); computed when
+/// empty or of another size (a refined mesh).
+Verdict check_mesh_file(const Mesh_file& mesh, const std::vector<bool>& is_fixed,
+                        const std::vector<int>& orientation = {});
 
 /// Per-element and per-vertex figures of `mesh.map`, the map the run
 /// `record` handed back, named as in the VTK files of the tool.
@@ -215,7 +220,9 @@ struct Map_fields
   CGAL::Mesh_untangling::IO::VTK_fields cells, points;
   Verdict verdict;   ///< check_mesh_file() of the same map
 };
-Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record);
+/// `orientation` as for check_mesh_file().
+Map_fields measure_map(const Mesh_file& mesh, const std::vector<bool>& is_fixed, const Run_record& record,
+                       const std::vector<int>& orientation = {});
 
 /// The phantom elements of the run `record` on the map `mesh.map`, as a mesh:
 /// the map's vertices, then the phantom vertices, and the phantom simplices.
