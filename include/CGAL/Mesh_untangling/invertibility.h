@@ -159,11 +159,15 @@ namespace internal {
 /// without a map: no angle is measured, so it costs the visit of the stars
 /// alone (on a cube of a million tetrahedra, a third of the whole check).
 /// `stars` are those of the first simplices, the mesh's (build_vertex_stars()).
+/// `open_stars`, when given, receives 1 for each vertex whose star is a
+/// half-disk: the boundary vertices, found on the way.
 template <std::size_t D>
 Invertibility_report non_manifold_stars(std::size_t number_of_vertices,
                                         const std::vector<std::array<std::size_t, D + 1>>& simplices,
-                                        const std::vector<int>& reference_orientation, const Vertex_stars& stars)
+                                        const std::vector<int>& reference_orientation, const Vertex_stars& stars,
+                                        std::vector<char>* open_stars = nullptr)
 {
+  if(open_stars) open_stars->assign(number_of_vertices, 0);
   using Point = std::conditional_t<D == 2, Vec2, Vec3>;
   const std::vector<Point> no_positions;
   const std::vector<signed char> no_signs;
@@ -181,6 +185,7 @@ Invertibility_report non_manifold_stars(std::size_t number_of_vertices,
     Defect_recorder record(part, no_fixed);
     const auto check_vertex = [&](std::size_t v, Star_type type, double, const auto&) {
       if(type == Star_type::NON_MANIFOLD) record.non_manifold_vertex(v);
+      if(open_stars && type == Star_type::OPEN) (*open_stars)[v] = 1;   // (each vertex in one chunk only)
     };
     if constexpr(D == 2)
       visit_vertex_stars_2<false>(no_positions, simplices, reference_orientation, no_signs, stars, first, last, check_vertex);

@@ -278,6 +278,16 @@ double mean_ratio(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& s)
   return c_d * std::pow(v, 2. / d) / sum_sq;
 }
 
+/// Whether a vertex flagged in `on_boundary` (the mesh's boundary vertices
+/// of `in`) is free: neither fixed nor sliding.
+template <int d>
+bool has_free_vertex_among(const Untangling_input<d>& in, const std::vector<char>& on_boundary)
+{
+  for(std::size_t v = 0; v < on_boundary.size(); ++v)
+    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v]) && !in.sliding.slides(v)) return true;
+  return false;
+}
+
 template <int d>
 bool find_free_boundary_vertex(const Untangling_input<d>& in)
 {
@@ -288,9 +298,7 @@ bool find_free_boundary_vertex(const Untangling_input<d>& in)
     : in.has_links() ? boundary_vertices<d>(n, elements_of_representatives(in.links, in.elements),
                                             in.number_of_mesh_elements())
                      : boundary_vertices<d>(n, in.elements, in.number_of_mesh_elements());
-  for(std::size_t v = 0; v < n; ++v)
-    if(on_boundary[v] && (in.is_fixed.empty() || !in.is_fixed[v]) && !in.sliding.slides(v)) return true;
-  return false;
+  return has_free_vertex_among(in, on_boundary);
 }
 
 /// Whether some vertex on the boundary of the mesh (phantoms left out) is free:

@@ -51,10 +51,10 @@ Untangling_result untangle(Untangling_input<d>& in, const Untangling_options& op
     validate_input<d>(in);   // once: every stage and step below works on copies of this input
     CGAL_MESH_UNTANGLING_STAGE("validate_input");
     if(options.sliding_boundary) target = slide_the_boundary<d>(in, options);
+    validate_stars<d>(in);
+    CGAL_MESH_UNTANGLING_STAGE("validate_stars");
     kind.emplace(in, requested);   // once: the strategies below ask it
     if(const std::string refused = kind->refusal(options); !refused.empty()) throw std::invalid_argument(refused);
-    validate_stars<d>(in, *kind);
-    CGAL_MESH_UNTANGLING_STAGE("validate_stars");
   } catch(const std::invalid_argument& e) {
     Untangling_result invalid;
     invalid.solver = to_string(options.solver == Solver::LBFGS ? Solver::LBFGS : Solver::NEWTON);

@@ -56,13 +56,14 @@ public:
   // --- The input's stars, as validation sees them.
 
   /// Whether every facet must be shared by at most two elements: the
-  /// corners of cells overlap by design.
-  bool has_simplex_facets() const { return !cells_; }
+  /// corners of cells overlap by design.  (Asked of the input itself: the
+  /// validation that runs before its kind is made, validate_stars.h.)
+  static bool has_simplex_facets(const Untangling_input<d>& in) { return !in.has_cells(); }
 
   /// Whether the vertex stars and edge fans of the elements are checked
   /// for being disks before the run (a seamless surface's stars are
   /// checked where its links are made; cells' corners form no stars).
-  bool has_checkable_stars() const { return !cells_ && !seamless_; }
+  static bool has_checkable_stars(const Untangling_input<d>& in) { return !in.has_cells() && !in.has_links(); }
 
   // --- Which strategy applies.
 
