@@ -10,6 +10,8 @@
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Dense>
 
 #include <utility>
@@ -20,7 +22,7 @@ namespace Mesh_untangling {
 namespace internal {
 
 /// A copy of `in` but for its targets, a tenth of a gigabyte for a million
-/// tetrahedra, which element_figures() takes from the run's end.
+/// tetrahedra, which element_figures() takes separately, from the run's end.
 template <int d>
 Untangling_input<d> copy_without_targets(Untangling_input<d>& in)
 {
@@ -32,19 +34,23 @@ Untangling_input<d> copy_without_targets(Untangling_input<d>& in)
 
 /// Per element of `result` (the mesh's, then the phantoms'), its figures
 /// against its target scaled as make_untangling_problem() scales it on
-/// `given` (the input the run started from: the scale of matched targets
-/// comes from the given map), with the targets the run ended with (in
-/// `given`: default ones when phantoms needed them) and its phantoms.  Elements with fixed
-/// vertices only, which the solver leaves out, are measured too.  J comes
-/// from edge vectors in the user's coordinates: no cancellation far from
-/// the origin.
+/// `given` (the input the run started from, without its targets: the scale
+/// of matched targets comes from the given map) by `scaling`, resolved as
+/// the run resolved it (resolved_target_scaling()), with `targets`, those
+/// the run ended with (default ones where phantoms needed them), and its
+/// phantoms.  Elements with fixed vertices only, which the solver leaves
+/// out, are measured too.  J comes from edge vectors in the user's
+/// coordinates: no cancellation far from the origin.
 template <int d>
-std::vector<Element_figures> element_figures(Untangling_input<d> given, const Untangling_input<d>& result,
-                                             const Phantom_elements<d>& phantoms, Target_scaling scaling)
+std::vector<Element_figures> element_figures(Untangling_input<d> given,
+                                             std::vector<typename Untangling_input<d>::Target> targets,
+                                             const Untangling_input<d>& result, const Phantom_elements<d>& phantoms,
+                                             Target_scaling scaling)
 {
   using Matrix = Eigen::Matrix<double, d, d>;
+  given.targets = std::move(targets);
+  CGAL_precondition(scaling != Target_scaling::AUTOMATIC);
   append_phantom_elements<d>(given, phantoms);
-  scaling = resolved_target_scaling<d>(given, scaling);
   given.is_fixed.clear();
   given.free_boundary_vertex.reset();
   const Untangling_problem<d> P =

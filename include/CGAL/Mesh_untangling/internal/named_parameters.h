@@ -147,9 +147,15 @@ Untangling_result untangle_as_parameters_ask(Untangling_input<d>& input, const N
     // A refined result is measured on the refined mesh; its boundary, and so
     // the volume that matched targets are scaled to, is the input's.
     if(!added.empty()) given = copy_without_targets(input);
-    given.targets = std::move(input.targets);   // (the input's last use: it was written back)
+    // (asked of the run's input, which knows whether a boundary vertex is free: a tenth of a
+    // second on a million tetrahedra asked again of the copy; and that of a sliding run did not know
+    // that the boundary slides)
+    const Target_scaling scaling = resolved_target_scaling<d>(input, options.scaling);
     auto out = get_parameter(np, internal_np::mesh_untangling_element_figures_output);
-    for(const Element_figures& f : element_figures<d>(std::move(given), input, phantoms, options.scaling)) *out++ = f;
+    // (the input's last use of its targets: it was written back)
+    for(const Element_figures& f :
+        element_figures<d>(std::move(given), std::move(input.targets), input, phantoms, scaling))
+      *out++ = f;
   }
   CGAL_MESH_UNTANGLING_STAGE("library: outputs");
   return result;

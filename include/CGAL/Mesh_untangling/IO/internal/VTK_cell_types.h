@@ -159,8 +159,8 @@ inline std::string add_VTK_element(VTK_elements& elements, std::size_t i, std::s
     elements.first_element = i;
   } else if(kind == nullptr ? type != elements.first_type : VTK_solid_kind(elements.first_type) == nullptr) {
     return "mixed cell types: " + VTK_cell_what(i) + " is a " + VTK_type_name(type) + " but "
-           + VTK_cell_what(elements.first_element) + " is a " + VTK_type_name(elements.first_type) + "; only one face type, or solid cells (tetrahedra, "
-           "pyramids, wedges, hexahedra) together, are supported";
+           + VTK_cell_what(elements.first_element) + " is a " + VTK_type_name(elements.first_type)
+           + "; only one face type, or solid cells (tetrahedra, pyramids, wedges, hexahedra) together, are supported";
   }
   if(size != cell.size)
     return VTK_cell_what(i) + " has type " + std::to_string(type) + " (" + VTK_type_name(type) + ") but "
