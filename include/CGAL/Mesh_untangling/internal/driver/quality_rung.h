@@ -6,7 +6,10 @@
 // at its own size.  Untangling asks for positive elements near the given
 // targets; a mesher asks for the best worst element, and rest shapes, when
 // given, are often what made the elements bad.  The barrier of the energy
-// and the step bound keep every element positive on the way; the exact
+// and the step bound keep every element positive on the way.  An energy
+// summed over the mesh leaves its worst elements behind: a local pass then
+// moves their free vertices one at a time to where the worst element
+// around each is best, as local hexahedral optimizers do.  The exact
 // verdict decides again at the end, and the map with the better worst
 // element is kept, so the figure never goes down.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_DRIVER_QUALITY_RUNG_H
@@ -197,6 +200,118 @@ Untangling_input<d> with_ideal_targets(const Untangling_input<d>& in, const std:
   return ideal;
 }
 
+/// The local pass of the quality rung (raise_worst_locally()): how many of
+/// the worst elements lend it their vertices in a sweep, how many sweeps at
+/// most, and how far a vertex's pattern search looks first (a fraction of
+/// its mean distance to its neighbours) and last (a fraction of that).
+constexpr std::size_t local_quality_worst_elements = 64;
+constexpr int local_quality_sweeps = 20;
+constexpr double local_quality_first_step = 0.25;
+constexpr double local_quality_last_step = 1e-3;
+
+/// The smallest element_quality() over the elements [first, last) of a
+/// star of `in` (`orientation`: the elements' own), its vertex v put at `p`.
+template <int d>
+double worst_in_star(Untangling_input<d>& in, std::size_t v, const Eigen::Matrix<double, d, 1>& p,
+                     const std::size_t* first, const std::size_t* last, const std::vector<int>& orientation)
+{
+  const Eigen::Matrix<double, d, 1> kept = in.positions[v];
+  in.positions[v] = p;
+  double worst = 1;
+  for(const std::size_t* e = first; e != last; ++e)
+    worst = (std::min)(worst, element_quality<d>(in, *e, orientation[*e]));
+  in.positions[v] = kept;
+  return worst;
+}
+
+/// Moves vertex v of `in` to where the worst element of its star is best
+/// that a compass search finds (the d axes and the 2^d diagonals, both
+/// ways; a step that gains nothing is halved): no element of the star
+/// ends below the star's worst before the move.  True when v moved.
+template <int d>
+bool raise_worst_in_star(Untangling_input<d>& in, std::size_t v, const Vertex_stars& stars,
+                         const std::vector<int>& orientation)
+{
+  using Vector = Eigen::Matrix<double, d, 1>;
+  const std::size_t* first = stars.elements.data() + stars.begin(v);
+  const std::size_t* last = stars.elements.data() + stars.end(v);
+  if(first == last) return false;
+  static const std::vector<Vector> directions = [] {
+    std::vector<Vector> all;
+    for(int i = 0; i < d; ++i)
+      for(double sign : {1., -1.}) all.push_back(sign * Vector::Unit(i));
+    for(int corner = 0; corner < (1 << d); ++corner) {
+      Vector diagonal;
+      for(int i = 0; i < d; ++i) diagonal[i] = (corner >> i) & 1 ? 1. : -1.;
+      all.push_back(diagonal.normalized());
+    }
+    return all;
+  }();
+  double length = 0;
+  std::size_t neighbours = 0;
+  for(const std::size_t* e = first; e != last; ++e)
+    for(std::size_t u : in.elements[*e])
+      if(u != v) { length += (in.positions[u] - in.positions[v]).norm(); ++neighbours; }
+  double step = local_quality_first_step * length / double(neighbours);
+  const double last_step = local_quality_last_step * step;
+  Vector p = in.positions[v];
+  const double start = worst_in_star<d>(in, v, p, first, last, orientation);
+  double worst = start;
+  while(step > last_step) {
+    Vector best_p = p;
+    for(const Vector& direction : directions) {
+      const Vector q = p + step * direction;
+      const double w = worst_in_star<d>(in, v, q, first, last, orientation);
+      if(w > worst) { worst = w; best_p = q; }
+    }
+    if(best_p == p) step /= 2;
+    else p = best_p;
+  }
+  if(!(worst > start)) return false;
+  in.positions[v] = p;
+  return true;
+}
+
+/// The local pass that ends the quality rung, as local hexahedral mesh
+/// optimizers work: sweep after sweep, the free vertices of the worst
+/// elements are moved one by one (raise_worst_in_star()), which lifts the
+/// worst element where an energy summed over the mesh, however weighted,
+/// leaves it.  Only free vertices inside the mesh move (the caller runs it
+/// when no boundary vertex is free: a free boundary's stars are protected
+/// by phantoms this pass does not see).  Returns the smallest quality.
+template <int d>
+double raise_worst_locally(Untangling_input<d>& in, const std::vector<int>& orientation,
+                           const Untangling_options& options)
+{
+  const std::size_t m = in.number_of_mesh_elements(), n = in.number_of_mesh_vertices();
+  const Vertex_stars stars = build_vertex_stars(n, in.elements, m);
+  const auto movable = [&](std::size_t v) {
+    return !(v < in.is_fixed.size() && in.is_fixed[v]) && !in.sliding.slides(v) && stars.begin(v) != stars.end(v);
+  };
+  // (an element of fixed vertices only is what it is: the worst of the others is what a sweep can lift)
+  std::vector<std::size_t> improvable;
+  for(std::size_t k = 0; k < m; ++k)
+    if(std::any_of(in.elements[k].begin(), in.elements[k].end(), movable)) improvable.push_back(k);
+  std::vector<std::pair<double, std::size_t>> quality(improvable.size());
+  double worst = -1;
+  for(int sweep = 0; sweep < local_quality_sweeps && !out_of_time(options); ++sweep) {
+    for(std::size_t i = 0; i < improvable.size(); ++i)
+      quality[i] = {element_quality<d>(in, improvable[i], orientation[improvable[i]]), improvable[i]};
+    const std::size_t count = (std::min)(local_quality_worst_elements, quality.size());
+    std::partial_sort(quality.begin(), quality.begin() + std::ptrdiff_t(count), quality.end());
+    if(count == 0 || (sweep > 0 && !(quality.front().first > worst))) break;
+    worst = quality.front().first;
+    std::vector<std::size_t> vertices;
+    for(std::size_t i = 0; i < count; ++i)
+      for(std::size_t v : in.elements[quality[i].second])
+        if(movable(v)) vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    for(std::size_t v : vertices) raise_worst_in_star<d>(in, v, stars, orientation);
+  }
+  return min_quality<d>(in, orientation);
+}
+
 /// After a run `r` that ended locally invertible on `in`: the quality rung
 /// (see the file's comment) within what is left of `options`' budget,
 /// with the run's protection of a free boundary.  The first round weighs
@@ -240,10 +355,23 @@ void optimize_quality(Untangling_input<d>& in, const Untangling_options& options
     current.positions = std::move(ideal.positions);
     best_phantoms = std::move(phantoms);
   }
+  // (the rounds pull every element toward its ideal; what they leave at the
+  // bottom, the local pass lifts, and the exact verdict decides again)
+  bool lifted = false;
+  if(!has_free_boundary_vertex<d>(in) && !out_of_time(options)) {
+    Untangling_input<d> local = current;
+    const double quality = raise_worst_locally<d>(local, orientation, options);
+    if(quality > best &&
+       final_status(check_mesh<d>(local, orientation), false, false, false) == Untangling_status::SUCCESS) {
+      best = quality;
+      current.positions = std::move(local.positions);
+      lifted = true;
+    }
+  }
   r.min_quality_after_optimization = best;
-  if(!best_phantoms) return;
+  if(!best_phantoms && !lifted) return;
   in.positions = current.positions;
-  if(phantoms_used) *phantoms_used = std::move(*best_phantoms);
+  if(phantoms_used && best_phantoms) *phantoms_used = std::move(*best_phantoms);
   describe_map<d>(in, options, r);
 }
 
