@@ -16,6 +16,7 @@
 // Usage: test_continuation_policy
 
 #include "free_boundary_families.h"
+#include "free_boundary_question.h"
 
 #include "test_common.h"
 
@@ -154,31 +155,20 @@ void check_relaxed_locked_ball()
   for(std::size_t v : mesh.fixed) CHECK_MESSAGE(in.positions[v] == given[v], "fixed vertex " << v << " moved");
 }
 
-/// Whether a run builds phantoms (and takes the continuation's free-boundary
-/// branch) turns on "is a boundary vertex free?", which validate_stars
-/// answers from the tetrahedra's vertex stars before the problem's kind is
-/// made: it must say what the boundary facets say (find_free_boundary_vertex).
-void check_free_boundary_question()
+/// The free-boundary question (free_boundary_question.h) on a twisted bar.
+void check_free_boundary_on_a_bar()
 {
   MI::Untangling_input<3> in = tetrahedral_problem(make_bar(24, 3, "twist", 180));
   const std::vector<char> on_boundary = MI::boundary_vertices<3>(in.positions.size(), in.elements);
-  const auto ask = [&](const std::vector<bool>& fixed, bool expected, const char* what) {
-    in.is_fixed = fixed;
-    in.free_boundary_vertex.reset();
-    MI::validate_stars<3>(in);
-    CHECK_MESSAGE(in.free_boundary_vertex.has_value(), what << ": not answered by the stars");
-    CHECK_MESSAGE(in.free_boundary_vertex.value_or(!expected) == expected, what << ": the stars' answer");
-    CHECK_MESSAGE(MI::find_free_boundary_vertex<3>(in) == expected, what << ": the facets' answer");
-  };
-  ask(in.is_fixed, true, "the bar's ends fixed");
+  check_free_boundary_question<3>(in, in.is_fixed, true, "the bar's ends fixed");
   std::vector<bool> boundary_fixed(on_boundary.begin(), on_boundary.end());
   CHECK(std::count(boundary_fixed.begin(), boundary_fixed.end(), false) > 0);   // (a bar 3 across has inner vertices)
-  ask(boundary_fixed, false, "every boundary vertex fixed");
+  check_free_boundary_question<3>(in, boundary_fixed, false, "every boundary vertex fixed");
   for(std::size_t v = 0; v < on_boundary.size(); v += 97)
     if(on_boundary[v]) {
       std::vector<bool> one_free = boundary_fixed;
       one_free[v] = false;
-      ask(one_free, true, "one boundary vertex free");
+      check_free_boundary_question<3>(in, one_free, true, "one boundary vertex free");
     }
 }
 
@@ -204,7 +194,7 @@ void check_blocked_motion()
 int main()
 {
   check_blocked_motion();
-  check_free_boundary_question();
+  check_free_boundary_on_a_bar();
   check_carried_bar("twist", 180);
   check_carried_bar("bend", 90);
   check_untangled_from_carried_start();

@@ -8,6 +8,7 @@
 // star, two swapped vertices in a grid) with and without protection.
 // Usage: test_phantom_triangles
 
+#include "free_boundary_question.h"
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/internal/phantoms/phantom_triangles.h>
@@ -395,37 +396,26 @@ static std::array<Eigen::Vector2d, 3> flatten(const Eigen::Vector3d& p, const Ei
   return {Eigen::Vector2d(0, 0), Eigen::Vector2d(e.norm(), 0), Eigen::Vector2d(f.dot(u), u.cross(f).norm())};
 }
 
-/// Whether phantoms are built turns on one question, "is a boundary vertex
-/// free?": validate_stars answers it from the stars' types before the
-/// problem's kind is made, and must say what the boundary facets say
-/// (find_free_boundary_vertex): a 2 x 2 grid under five choices of fixed
-/// vertices.
+/// The free-boundary question (free_boundary_question.h) on a 2 x 2 grid
+/// under five choices of fixed vertices.
 static void test_free_boundary_question()
 {
   const Mesh2 m = grid(2);   // 9 vertices: the centre (id 4) alone is inside
   MI::Untangling_input<2> in;
   in.positions = m.rest;
   for(const auto& t : m.triangles) in.elements.push_back(t);
-  const auto ask = [&](const std::vector<bool>& fixed, bool expected, const char* what) {
-    in.is_fixed = fixed;
-    in.free_boundary_vertex.reset();
-    MI::validate_stars<2>(in);
-    CHECK_MESSAGE(in.free_boundary_vertex.has_value(), what << ": not answered by the stars");
-    CHECK_MESSAGE(in.free_boundary_vertex.value_or(!expected) == expected, what << ": the stars' answer");
-    CHECK_MESSAGE(MI::find_free_boundary_vertex<2>(in) == expected, what << ": the facets' answer");
-  };
   std::vector<bool> boundary_fixed(9, true);
   boundary_fixed[4] = false;
-  ask({}, true, "nothing fixed");
-  ask(boundary_fixed, false, "boundary fixed, the centre free");
+  check_free_boundary_question<2>(in, {}, true, "nothing fixed");
+  check_free_boundary_question<2>(in, boundary_fixed, false, "boundary fixed, the centre free");
   std::vector<bool> all_but_a_side = boundary_fixed;
   all_but_a_side[m.id(1, 0)] = false;   // (the middle of the bottom side)
-  ask(all_but_a_side, true, "one boundary vertex free");
+  check_free_boundary_question<2>(in, all_but_a_side, true, "one boundary vertex free");
   std::vector<bool> all_but_a_corner = boundary_fixed;
   all_but_a_corner[m.id(2, 2)] = false;   // (in one triangle or two: a boundary vertex either way)
-  ask(all_but_a_corner, true, "one corner free");
+  check_free_boundary_question<2>(in, all_but_a_corner, true, "one corner free");
   std::vector<bool> everything(9, true);
-  ask(everything, false, "every vertex fixed");
+  check_free_boundary_question<2>(in, everything, false, "every vertex fixed");
 }
 
 static void test_random_meshes()
