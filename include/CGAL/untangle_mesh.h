@@ -331,14 +331,28 @@ untangle_mesh(Triangulation& tr, const Named_function_parameters<T, Tag, Base>& 
 ///   \cgalParamNBegin{vertex_is_constrained_map}
 ///     \cgalParamDescription{the fixed vertices: never moved}
 ///     \cgalParamType{a readable property map `C3T3::Triangulation::Vertex_handle` -> `bool`}
-///     \cgalParamDefault{the vertices of the complex's facets (boundary and interfaces of the subdomains),
-///       of its edges (features) and its corners, and those on the boundary of its cells; with
-///       `sliding_boundary`, its corners and the vertices of the interfaces between its subdomains}
+///     \cgalParamDefault{the complex's corners, the vertices of the constrained edges and facets (below) and those
+///       on the boundary of its cells; with `sliding_boundary`, its corners and the vertices of the constrained
+///       facets between two of its cells (the interfaces between subdomains)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{the constrained edges (the 1D features): their vertices are fixed by default, and with
+///       `sliding_boundary` they are feature edges, their vertices sliding on their curves; asked for each edge of
+///       the cells in the complex, with its two vertices in either order}
+///     \cgalParamType{a readable property map `std::pair<C3T3::Triangulation::Vertex_handle,
+///       C3T3::Triangulation::Vertex_handle>` -> `bool`}
+///     \cgalParamDefault{the complex's edges (the 1D features Mesh_3 protected)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{facet_is_constrained_map}
+///     \cgalParamDescription{the constrained facets (surfaces to keep): the vertices of those between two cells in
+///       the complex are fixed by default, with or without `sliding_boundary` (the boundary of the cells is fixed, or
+///       slides); asked for each facet of the cells in the complex from either side}
+///     \cgalParamType{a readable property map `C3T3::Triangulation::Facet` -> `bool`}
+///     \cgalParamDefault{the complex's facets (the boundary and interfaces of its subdomains)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::sliding_boundary, feature_angle}
 ///     \cgalParamDescription{as for `untangle_simplex_soup()`: the boundary of the cells in the complex slides on
-///       itself, its feature edges being the complex's edges (the 1D features Mesh_3 protected) and those
-///       beyond the feature angle}
+///       itself, its feature edges being the constrained edges and those beyond the feature angle}
 ///     \cgalParamDefault{`false`, 35 degrees}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_point_map, cell_target_map}
@@ -359,18 +373,24 @@ untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
   namespace MUI = Mesh_untangling::internal;
   static_assert(!MUI::is_given_parameter<Named_function_parameters<T, Tag, Base>,
                                          internal_np::mesh_untangling_feature_edges_t>(),
-                "the feature edges of a Mesh_complex_3_in_triangulation_3 are its edges in the complex");
+                "the feature edges of a Mesh_complex_3_in_triangulation_3 are its constrained edges "
+                "(edge_is_constrained_map, by default its edges in the complex)");
   const MUI::Triangulation_cells<typename C3T3::Triangulation> cells(MUI::cells_in_complex_of(c3t3));
   std::string error = MUI::triangulation_error(c3t3.triangulation(), "the complex's triangulation");
   if(error.empty() && cells.number_of_cells() == 0) error = "the complex has no cell (no cell is in a subdomain)";
   const bool sliding = parameters::choose_parameter(
     parameters::get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
-  const std::vector<std::array<std::size_t, 2>> features =
-    sliding ? MUI::complex_feature_edges(c3t3, cells) : std::vector<std::array<std::size_t, 2>>();
+  const auto edge_is_constrained = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_is_constrained),
+                                                                MUI::Edge_in_complex_map<C3T3>{&c3t3});
+  const auto facet_is_constrained = parameters::choose_parameter(
+    parameters::get_parameter(np, internal_np::facet_is_constrained), MUI::Facet_in_complex_map<C3T3>{&c3t3});
+  const std::vector<std::array<std::size_t, 2>> constrained =
+    error.empty() ? MUI::constrained_edges(cells, edge_is_constrained) : std::vector<std::array<std::size_t, 2>>();
+  const std::vector<std::array<std::size_t, 2>> no_features;
   return MUI::untangle_triangulation_cells<ConcurrencyTag>(
     cells, error,
-    [&] { return MUI::complex_fixed_flags(c3t3, cells, sliding); },
-    Mesh_untangling::parameters::feature_edges(std::cref(features), np));
+    [&] { return MUI::complex_fixed_flags(c3t3, cells, sliding, constrained, facet_is_constrained); },
+    Mesh_untangling::parameters::feature_edges(std::cref(sliding ? constrained : no_features), np));
 }
 
 /// \cond SKIP_IN_MANUAL

@@ -221,6 +221,92 @@ void test_complex_sliding()
   CHECK(same_bits(corner->point(), corner_given));
 }
 
+/// edge_is_constrained_map and facet_is_constrained_map on a complex (the
+/// names Tetrahedral_remeshing uses): a marked edge inside fixes its two
+/// vertices, a marked facet inside its three, with or without a sliding
+/// boundary; with a sliding boundary, a marked boundary edge is a feature
+/// (asked in either order: the map knows one), as an edge in the complex is.
+void test_complex_constrained_maps()
+{
+  using Vh = Tr::Vertex_handle;
+  const auto interior = [](Vh v) { return v->in_dimension() == 3; };
+  C3t3 c3t3 = twisted_ball();
+  std::set<std::pair<Vh, Vh>> edges;
+  Tr::Facet facet;
+  bool has_facet = false;
+  for(auto c : cells_of(c3t3))
+    for(int i = 0; i < 4; ++i) {
+      const Vh a = c->vertex(i), b = c->vertex((i + 1) & 3), e = c->vertex((i + 2) & 3), f = c->vertex((i + 3) & 3);
+      if(edges.empty() && interior(a) && interior(b)) edges.insert({b, a});
+      if(!has_facet && c3t3.is_in_complex(c->neighbor(i)) && interior(b) && interior(e) && interior(f) &&
+         !edges.count({b, e}) && !edges.count({e, b})) {
+        facet = Tr::Facet(c, i);
+        has_facet = true;
+      }
+    }
+  CHECK(!edges.empty() && has_facet);
+  if(edges.empty() || !has_facet) return;
+  const Vh edge_a = edges.begin()->first, edge_b = edges.begin()->second;
+  std::set<Vh> facet_vertices;
+  for(int k = 1; k < 4; ++k) facet_vertices.insert(facet.first->vertex((facet.second + k) & 3));
+  const std::size_t shared = facet_vertices.count(edge_a) + facet_vertices.count(edge_b);
+  const auto edge_map = boost::make_function_property_map<std::pair<Vh, Vh>>(
+    [&](const std::pair<Vh, Vh>& e) { return edges.count(e) > 0; });
+  const auto facet_map = boost::make_function_property_map<Tr::Facet>([&](const Tr::Facet& f) {
+    return f == facet || c3t3.triangulation().mirror_facet(f) == facet;
+  });
+  const auto given = points_of(c3t3);
+
+  C3t3 plain = twisted_ball();
+  const MU::Untangling_result r = CGAL::untangle_mesh(plain);
+  const MU::Untangling_result e = CGAL::untangle_mesh(c3t3, CGAL::parameters::edge_is_constrained_map(edge_map)
+                                                               .facet_is_constrained_map(facet_map));
+  // (the ball has few vertices inside, and fixing five of them may hold an inverted cell: what is
+  // asserted is which vertices are fixed, and that they stay)
+  CHECK_MESSAGE(e.number_of_fixed_vertices == r.number_of_fixed_vertices + 5 - shared,
+                e.number_of_fixed_vertices << " fixed, not " << r.number_of_fixed_vertices << " + 5 - " << shared);
+  CHECK(same_bits(edge_a->point(), given.at(edge_a)) && same_bits(edge_b->point(), given.at(edge_b)));
+  for(Vh v : facet_vertices) CHECK(same_bits(v->point(), given.at(v)));
+
+  // sliding: the marked facet inside keeps its vertices; nothing else inside is held
+  C3t3 sliding_ball = twisted_ball();
+  Tr::Facet inner;
+  for(auto c : cells_of(sliding_ball))
+    for(int i = 0; i < 4 && inner.first == Tr::Cell_handle(); ++i)
+      if(sliding_ball.is_in_complex(c->neighbor(i)) && interior(c->vertex((i + 1) & 3)) &&
+         interior(c->vertex((i + 2) & 3)) && interior(c->vertex((i + 3) & 3)))
+        inner = Tr::Facet(c, i);
+  const auto inner_map = boost::make_function_property_map<Tr::Facet>([&](const Tr::Facet& f) {
+    return f == inner || sliding_ball.triangulation().mirror_facet(f) == inner;
+  });
+  const auto sliding = MU::parameters::sliding_boundary(true, MU::parameters::feature_angle(90.));
+  const auto sliding_given = points_of(sliding_ball);
+  const MU::Untangling_result s = CGAL::untangle_mesh(sliding_ball, sliding.facet_is_constrained_map(inner_map));
+  CHECK_MESSAGE(s.is_locally_invertible(), s.message);
+  CHECK(s.vertices_sliding_on_curves == 0);
+  CHECK_MESSAGE(s.number_of_fixed_vertices == s.corner_vertices_held + 3,
+                s.number_of_fixed_vertices << " fixed, " << s.corner_vertices_held << " corners");
+  for(int k = 1; k < 4; ++k) {
+    const Vh v = inner.first->vertex((inner.second + k) & 3);
+    CHECK(same_bits(v->point(), sliding_given.at(v)));
+  }
+
+  // sliding: a marked boundary edge is a feature, its ends corners (as test_complex_sliding's edge in the complex)
+  C3t3 marked = twisted_ball();
+  std::set<std::pair<Vh, Vh>> boundary_edge;
+  for(auto c : cells_of(marked))
+    for(int i = 0; i < 4 && boundary_edge.empty(); ++i)
+      if(!marked.is_in_complex(c->neighbor(i))) boundary_edge.insert({c->vertex((i + 2) & 3), c->vertex((i + 1) & 3)});
+  C3t3 unmarked = twisted_ball();
+  const MU::Untangling_result u = CGAL::untangle_mesh(unmarked, sliding);
+  const MU::Untangling_result m = CGAL::untangle_mesh(
+    marked, sliding.edge_is_constrained_map(boost::make_function_property_map<std::pair<Vh, Vh>>(
+              [&](const std::pair<Vh, Vh>& e) { return boundary_edge.count(e) > 0; })));
+  CHECK_MESSAGE(m.is_locally_invertible(), m.message);
+  CHECK_MESSAGE(m.corner_vertices_held == u.corner_vertices_held + 2, m.corner_vertices_held << " corners, not "
+                                                                         << u.corner_vertices_held << " + 2");
+}
+
 /// 300 random points in the unit cube and its corners, the points inside
 /// the hull moved by up to `shake` in each coordinate.
 template <typename Triangulation, typename MakePoint>
@@ -339,6 +425,7 @@ int main()
   test_complex_defaults();
   test_complex_named_parameters();
   test_complex_sliding();
+  test_complex_constrained_maps();
   test_delaunay();
   test_regular();
   test_degenerate_triangulations();

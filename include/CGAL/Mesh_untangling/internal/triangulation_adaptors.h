@@ -17,6 +17,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -174,52 +177,89 @@ std::vector<bool> convex_hull_flags(const Triangulation& tr, const Triangulation
   return flags;
 }
 
-/// The default fixed vertices of a Mesh_complex_3_in_triangulation_3: its
-/// corners and the vertices of its facets (the boundary and interfaces of
-/// its subdomains), of its edges (the features) and of the facets between a
-/// cell in the complex and one outside (the boundary of the cells, where no
-/// facet was marked).  When its boundary is `sliding`: its corners and the
-/// vertices of the facets between two of its cells (the interfaces, which
-/// do not slide) only.
+/// The defaults of `edge_is_constrained_map` and `facet_is_constrained_map`
+/// for a Mesh_complex_3_in_triangulation_3: whether an edge (its 1D
+/// features) or a facet (the boundary and interfaces of its subdomains) is
+/// in the complex.
 template <typename C3T3>
-std::vector<bool> complex_fixed_flags(const C3T3& c3t3, const Triangulation_cells<typename C3T3::Triangulation>& cells,
-                                      bool sliding)
+struct Edge_in_complex_map
 {
-  std::vector<bool> flags(cells.number_of_vertices(), false);
-  const auto mark = [&](auto v) {
-    if(const auto i = cells.find(v)) flags[*i] = true;
-  };
-  const auto mark_facet = [&](auto c, int i) {
-    for(int k = 1; k < 4; ++k) mark(c->vertex((i + k) & 3));
-  };
-  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
-    mark(typename C3T3::Triangulation::Vertex_handle(v));
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-    if(!sliding || (c3t3.is_in_complex(f->first) && c3t3.is_in_complex(f->first->neighbor(f->second))))
-      mark_facet(f->first, f->second);
-  if(sliding) return flags;
-  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
-    mark(e->first->vertex(e->second));
-    mark(e->first->vertex(e->third));
-  }
-  for(auto c : cells.cells())
-    for(int i = 0; i < 4; ++i)
-      if(!c3t3.is_in_complex(c->neighbor(i))) mark_facet(c, i);
-  return flags;
-}
+  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
+  using key_type = std::pair<Vertex_handle, Vertex_handle>;
+  using value_type = bool;
+  using reference = bool;
+  using category = boost::readable_property_map_tag;
+  const C3T3* c3t3;
+  friend bool get(const Edge_in_complex_map& m, const key_type& e) { return m.c3t3->is_in_complex(e.first, e.second); }
+};
 
-/// The edges of a Mesh_complex_3_in_triangulation_3 (its 1D features), as
-/// pairs of indices in `cells`.
 template <typename C3T3>
-std::vector<std::array<std::size_t, 2>> complex_feature_edges(const C3T3& c3t3,
-                                                              const Triangulation_cells<typename C3T3::Triangulation>& cells)
+struct Facet_in_complex_map
+{
+  using key_type = typename C3T3::Triangulation::Facet;
+  using value_type = bool;
+  using reference = bool;
+  using category = boost::readable_property_map_tag;
+  const C3T3* c3t3;
+  friend bool get(const Facet_in_complex_map& m, const key_type& f) { return m.c3t3->is_in_complex(f); }
+};
+
+/// The edges of `cells` that `constrained` (a map as `edge_is_constrained_map`)
+/// marks, asked with its vertex handles in either order, as pairs of
+/// indices in `cells`, the smaller first, each once.
+template <typename Triangulation, typename EdgeIsConstrainedMap>
+std::vector<std::array<std::size_t, 2>> constrained_edges(const Triangulation_cells<Triangulation>& cells,
+                                                          const EdgeIsConstrainedMap& constrained)
 {
   std::vector<std::array<std::size_t, 2>> edges;
-  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
-    const auto a = cells.find(e->first->vertex(e->second)), b = cells.find(e->first->vertex(e->third));
-    if(a && b) edges.push_back({*a, *b});
-  }
+  for(auto c : cells.cells())
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) {
+        const auto a = c->vertex(i), b = c->vertex(j);
+        if(!get(constrained, std::make_pair(a, b)) && !get(constrained, std::make_pair(b, a))) continue;
+        const std::size_t ia = cells.index_of(a), ib = cells.index_of(b);
+        edges.push_back({(std::min)(ia, ib), (std::max)(ia, ib)});
+      }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
+}
+
+/// The default fixed vertices of a Mesh_complex_3_in_triangulation_3: its
+/// corners, the vertices of the `constrained_edges` (by default its edges,
+/// the features) and of the facets that `facet_is_constrained` marks from
+/// either side (by default its facets: the boundary and interfaces of its
+/// subdomains), and those of the facets between a cell in the complex and
+/// one outside (the boundary of the cells, where no facet was marked).
+/// When its boundary is `sliding`: its corners and the vertices of the
+/// constrained facets between two of its cells (the interfaces, which do
+/// not slide) only.
+template <typename C3T3, typename FacetIsConstrainedMap>
+std::vector<bool> complex_fixed_flags(const C3T3& c3t3, const Triangulation_cells<typename C3T3::Triangulation>& cells,
+                                      bool sliding, const std::vector<std::array<std::size_t, 2>>& constrained_edges,
+                                      const FacetIsConstrainedMap& facet_is_constrained)
+{
+  std::vector<bool> flags(cells.number_of_vertices(), false);
+  const auto mark_facet = [&](auto c, int i) {
+    for(int k = 1; k < 4; ++k) flags[cells.index_of(c->vertex((i + k) & 3))] = true;
+  };
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    if(const auto i = cells.find(typename C3T3::Triangulation::Vertex_handle(v))) flags[*i] = true;
+  for(auto c : cells.cells())
+    for(int i = 0; i < 4; ++i) {
+      const bool inside = c3t3.is_in_complex(c->neighbor(i));
+      if(!sliding && !inside) {   // (the boundary of the cells)
+        mark_facet(c, i);
+        continue;
+      }
+      const typename C3T3::Triangulation::Facet facet(c, i);
+      if(inside && (get(facet_is_constrained, facet) ||
+                    get(facet_is_constrained, c3t3.triangulation().mirror_facet(facet))))
+        mark_facet(c, i);
+    }
+  if(!sliding)
+    for(const auto& e : constrained_edges) flags[e[0]] = flags[e[1]] = true;
+  return flags;
 }
 
 template <typename Triangulation>
