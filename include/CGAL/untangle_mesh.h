@@ -380,12 +380,13 @@ untangle_mesh(C3T3& c3t3, const Named_function_parameters<T, Tag, Base>& np)
   if(error.empty() && cells.number_of_cells() == 0) error = "the complex has no cell (no cell is in a subdomain)";
   const bool sliding = parameters::choose_parameter(
     parameters::get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
-  const auto edge_is_constrained = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_is_constrained),
-                                                                MUI::Edge_in_complex_map<C3T3>{&c3t3});
   const auto facet_is_constrained = parameters::choose_parameter(
     parameters::get_parameter(np, internal_np::facet_is_constrained), MUI::Facet_in_complex_map<C3T3>{&c3t3});
-  const std::vector<std::array<std::size_t, 2>> constrained =
-    error.empty() ? MUI::constrained_edges(cells, edge_is_constrained) : std::vector<std::array<std::size_t, 2>>();
+  std::vector<std::array<std::size_t, 2>> constrained;
+  if constexpr(MUI::is_given_parameter<Named_function_parameters<T, Tag, Base>, internal_np::edge_is_constrained_t>())
+    constrained = MUI::constrained_edges(cells, parameters::get_parameter(np, internal_np::edge_is_constrained));
+  else
+    constrained = MUI::complex_edges(c3t3, cells);   // (the complex's own list, not a lookup per edge of every cell)
   const std::vector<std::array<std::size_t, 2>> no_features;
   return MUI::untangle_triangulation_cells<ConcurrencyTag>(
     cells, error,

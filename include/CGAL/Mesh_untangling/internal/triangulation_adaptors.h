@@ -177,22 +177,9 @@ std::vector<bool> convex_hull_flags(const Triangulation& tr, const Triangulation
   return flags;
 }
 
-/// The defaults of `edge_is_constrained_map` and `facet_is_constrained_map`
-/// for a Mesh_complex_3_in_triangulation_3: whether an edge (its 1D
-/// features) or a facet (the boundary and interfaces of its subdomains) is
-/// in the complex.
-template <typename C3T3>
-struct Edge_in_complex_map
-{
-  using Vertex_handle = typename C3T3::Triangulation::Vertex_handle;
-  using key_type = std::pair<Vertex_handle, Vertex_handle>;
-  using value_type = bool;
-  using reference = bool;
-  using category = boost::readable_property_map_tag;
-  const C3T3* c3t3;
-  friend bool get(const Edge_in_complex_map& m, const key_type& e) { return m.c3t3->is_in_complex(e.first, e.second); }
-};
-
+/// The default of `facet_is_constrained_map` for a
+/// Mesh_complex_3_in_triangulation_3: whether a facet is in the complex (the
+/// boundary and interfaces of its subdomains).
 template <typename C3T3>
 struct Facet_in_complex_map
 {
@@ -220,6 +207,23 @@ std::vector<std::array<std::size_t, 2>> constrained_edges(const Triangulation_ce
         const std::size_t ia = cells.index_of(a), ib = cells.index_of(b);
         edges.push_back({(std::min)(ia, ib), (std::max)(ia, ib)});
       }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+/// The default of `edge_is_constrained_map` for a
+/// Mesh_complex_3_in_triangulation_3: its edges in the complex (its 1D
+/// features), among those of `cells`, as constrained_edges() gives them.
+template <typename C3T3>
+std::vector<std::array<std::size_t, 2>> complex_edges(const C3T3& c3t3,
+                                                      const Triangulation_cells<typename C3T3::Triangulation>& cells)
+{
+  std::vector<std::array<std::size_t, 2>> edges;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
+    const auto a = cells.find(e->first->vertex(e->second)), b = cells.find(e->first->vertex(e->third));
+    if(a && b) edges.push_back({(std::min)(*a, *b), (std::max)(*a, *b)});
+  }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
