@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -217,17 +218,27 @@ constexpr double local_quality_least_gain = 1e-4;
 constexpr double local_quality_first_step = 0.25;
 constexpr double local_quality_last_step = 1e-3;
 
-/// The smallest element_quality() over the elements [first, last) of a
-/// star of `in` (`orientation`: the elements' own), its vertex v put at `p`.
+/// The smallest element_quality() over the elements of `star`, a star
+/// of `in` (`orientation`: the elements' own), its vertex v put at `p`;
+/// or, as soon as an element is at most `floor`, that element's quality (a
+/// caller that keeps only stars better than `floor` needs no more).  The
+/// element that ends the search moves to the front of the star, so that the
+/// next nearby trial meets it first (the minimum does not depend on order).
 template <int d>
 double worst_in_star(Untangling_input<d>& in, std::size_t v, const Eigen::Matrix<double, d, 1>& p,
-                     const std::size_t* first, const std::size_t* last, const std::vector<int>& orientation)
+                     std::vector<std::size_t>& star, const std::vector<int>& orientation,
+                     double floor = -std::numeric_limits<double>::infinity())
 {
   const Eigen::Matrix<double, d, 1> kept = in.positions[v];
   in.positions[v] = p;
   double worst = 1;
-  for(const std::size_t* e = first; e != last; ++e)
+  for(auto e = star.begin(); e != star.end(); ++e) {
     worst = (std::min)(worst, element_quality<d>(in, *e, orientation[*e]));
+    if(worst <= floor) {
+      std::rotate(star.begin(), e, e + 1);
+      break;
+    }
+  }
   in.positions[v] = kept;
   return worst;
 }
@@ -263,13 +274,14 @@ bool raise_worst_in_star(Untangling_input<d>& in, std::size_t v, const Vertex_st
   double step = local_quality_first_step * length / double(neighbours);
   const double last_step = local_quality_last_step * step;
   Vector p = in.positions[v];
-  const double start = worst_in_star<d>(in, v, p, first, last, orientation);
+  std::vector<std::size_t> star(first, last);   // (in the order worst_in_star leaves it)
+  const double start = worst_in_star<d>(in, v, p, star, orientation);
   double worst = start;
   while(step > last_step) {
     Vector best_p = p;
     for(const Vector& direction : directions) {
       const Vector q = p + step * direction;
-      const double w = worst_in_star<d>(in, v, q, first, last, orientation);
+      const double w = worst_in_star<d>(in, v, q, star, orientation, worst);
       if(w > worst) { worst = w; best_p = q; }
     }
     if(best_p == p) step /= 2;
@@ -297,16 +309,26 @@ double raise_worst_locally(Untangling_input<d>& in, const std::vector<int>& orie
     return !(v < in.is_fixed.size() && in.is_fixed[v]) && !in.sliding.slides(v) && stars.begin(v) != stars.end(v);
   };
   // (an element of fixed vertices only is what it is: the worst of the others is what a sweep can lift)
-  std::vector<std::size_t> improvable;
-  for(std::size_t k = 0; k < m; ++k)
-    if(std::any_of(in.elements[k].begin(), in.elements[k].end(), movable)) improvable.push_back(k);
+  constexpr std::size_t not_improvable = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> improvable, position(m, not_improvable);
+  std::vector<double> score;   // of each improvable element, scored again only where a vertex of it moved
+  double worst_fixed = 1;      // of the others
+  for(std::size_t k = 0; k < m; ++k) {
+    const double q = element_quality<d>(in, k, orientation[k]);
+    if(std::any_of(in.elements[k].begin(), in.elements[k].end(), movable)) {
+      position[k] = improvable.size();
+      improvable.push_back(k);
+      score.push_back(q);
+    } else {
+      worst_fixed = (std::min)(worst_fixed, q);
+    }
+  }
   std::vector<std::pair<double, std::size_t>> quality(improvable.size());
   double worst = -1;
   for(int sweep = 0, without_gain = 0;
       sweep < local_quality_sweeps && without_gain < local_quality_sweeps_without_gain && !out_of_time(options);
       ++sweep) {
-    for(std::size_t i = 0; i < improvable.size(); ++i)
-      quality[i] = {element_quality<d>(in, improvable[i], orientation[improvable[i]]), improvable[i]};
+    for(std::size_t i = 0; i < improvable.size(); ++i) quality[i] = {score[i], improvable[i]};
     const std::size_t count = (std::min)(local_quality_worst_elements, quality.size());
     if(count == 0) break;
     std::partial_sort(quality.begin(), quality.begin() + std::ptrdiff_t(count), quality.end());
@@ -322,9 +344,15 @@ double raise_worst_locally(Untangling_input<d>& in, const std::vector<int>& orie
         if(movable(v)) vertices.push_back(v);
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    for(std::size_t v : vertices) raise_worst_in_star<d>(in, v, stars, orientation);
+    for(std::size_t v : vertices) {
+      if(!raise_worst_in_star<d>(in, v, stars, orientation)) continue;
+      for(std::size_t j = stars.begin(v); j != stars.end(v); ++j) {
+        const std::size_t k = stars.elements[j];
+        if(position[k] != not_improvable) score[position[k]] = element_quality<d>(in, k, orientation[k]);
+      }
+    }
   }
-  return min_quality<d>(in, orientation);
+  return std::accumulate(score.begin(), score.end(), worst_fixed, [](double a, double b) { return (std::min)(a, b); });
 }
 
 /// After a run `r` that ended locally invertible on `in`: the quality rung
