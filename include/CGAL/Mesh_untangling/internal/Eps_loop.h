@@ -110,6 +110,12 @@ enum class Stall_test
 {
   NONE,               // never (stage 2, from a valid map)
   COUNT_STANDS,       // the count of non-positive elements has not gone down for stall_patience() steps
+  // That, counted from the first step's count, not the start's: a run toward
+  // new targets (stage 1's regular ones) first reshapes the whole map, and
+  // the count jumps before it falls (i02c 204 of the CuboidBlocks from its
+  // input: 144 -> 1,182 in the first step, then 1,038, 545, 238, 226, where
+  // COUNT_STANDS gave up after 10 steps and shook the map).
+  COUNT_FALLS_AFTER_FIRST_STEP,
   COUNT_NOT_HALVED    // that, or (Newton) the halving rule: see halving_window
 };
 
@@ -210,7 +216,9 @@ public:
     const double eps_cap = largest_epsilon(P);
     double eps = newton && summary.min_det > 0 ? tiny_epsilon : std::min(initial_epsilon(summary.min_det), eps_cap);
     const std::size_t initial_count = summary.non_positive;
-    std::size_t best = initial_count, since_best = 0;
+    std::size_t best = stall == Stall_test::COUNT_FALLS_AFTER_FIRST_STEP ? std::numeric_limits<std::size_t>::max()
+                                                                         : initial_count;
+    std::size_t since_best = 0;
     const bool must_halve = stall == Stall_test::COUNT_NOT_HALVED && newton != nullptr;
     std::vector<std::size_t> counts;   // of non-positive elements after each step
     std::size_t idle_steps = 0;        // in a row, without an inner iteration

@@ -24,6 +24,14 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// How a direct run's stage 0 (the given targets, staged_untangling.h)
+/// runs when stage 1 (regular targets) may follow it.
+enum class Stage_0 {
+  UNTIL_STALL,           // gives up at its first stall
+  UNLESS_OUT_OF_REACH,   // skipped when the given targets are out of reach of the map, else UNTIL_STALL
+  UNTIL_SETTLED          // until its energy settles or the budget is spent (local_repair.h)
+};
+
 struct Untangling_options
 {
   double theta = -1;                 // < 0: 1/128 in 2D, 1/2 in 3D
@@ -50,8 +58,7 @@ struct Untangling_options
   // When the continuation will follow a failed direct untangling, a stall of
   // stage 0 already tells that the direct way is blocked (see continuation.h).
   bool give_up_on_stall = false;
-  // Stage 0 runs until its energy settles or the budget is spent (local_repair.h).
-  bool stage_0_never_stalls = false;
+  Stage_0 stage_0 = Stage_0::UNTIL_STALL;
   // Local refinement after a fixed-boundary run that leaves inverted
   // elements (refinement/local_refinement.h), and its budget of new vertices.
   bool refinement = false;

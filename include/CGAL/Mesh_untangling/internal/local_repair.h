@@ -26,11 +26,13 @@
 // did; s16c 12 10 eps steps instead of 337; rockerarm 348 at the second try.
 //
 // A run can also fail far from a solution: on rockerarm 344 (502 inverted
-// in the input) stage 0 gives up after 4 steps, its count never below the
-// input's (the halving rule, Eps_loop.h), and stage 1 ends with 3,493.
+// in the input) stage 0 gave up after 4 steps, its count never below the
+// input's (the halving rule, Eps_loop.h), and stage 1 ended with 3,493.
 // Without the stall tests stage 0 reaches 8 inverted in 100 steps, which the
 // local phase repairs at 2 rings: a failed run with too many inverted
-// elements for the local phase is rerun that way.
+// elements for the local phase is rerun that way.  (rockerarm 344 itself
+// no longer needs it: its given targets are out of reach of its input's
+// map, so stage 1 starts from that map and untangles it, staged_untangling.h.)
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_LOCAL_REPAIR_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_LOCAL_REPAIR_H
 
@@ -227,7 +229,7 @@ void repair_locally_after(Untangling_input<d>& in, const std::vector<Eigen::Matr
     Untangling_options patient = within_budget(work);
     patient.max_outer_iterations = std::min(patient.max_outer_iterations, patient_rerun_eps_steps);
     patient.callback = options.progress_step;
-    patient.stage_0_never_stalls = true;
+    patient.stage_0 = Stage_0::UNTIL_SETTLED;
     const Untangling_result first = untangle_directly<d>(rerun, patient);
     add_counts(work, first);
     repaired = reached_goal(first.status) ||

@@ -45,7 +45,13 @@ Run<d> run_directly(Untangling_input<d>& in, const Untangling_options& options, 
                     const Protection_request<d>& protection)
 {
   Run<d> direct;
-  direct.result = untangle_directly<d>(in, options, protection, &direct.phantoms,
+  // The user's map may be far from the given targets (the rule was measured
+  // on such maps); the other direct runs start near a solution (the local
+  // repair's regions, the quality rung's polish) or from a map made for
+  // the given targets (the convex start, the continuation's steps).
+  Untangling_options from_the_given_map = options;
+  from_the_given_map.stage_0 = Stage_0::UNLESS_OUT_OF_REACH;
+  direct.result = untangle_directly<d>(in, from_the_given_map, protection, &direct.phantoms,
                                        kind.repair_at_stall_applies() ? local_repair_at_stall<d>(options)
                                                                       : Repair_at_stall<d>());
   return direct;
