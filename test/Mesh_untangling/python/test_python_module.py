@@ -33,16 +33,18 @@ def tangled_square(n=12):
     """An n x n grid of the unit square, two triangles a cell, the middle vertex
     pushed across its neighbours; the boundary vertex ids."""
     xs = np.linspace(0, 1, n + 1)
-    vertices = np.array([[x, y] for y in xs for x in xs])
-    triangles = []
-    for j in range(n):
-        for i in range(n):
-            a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i
-            triangles += [[a, b, c], [a, c, d]]
+    x, y = np.meshgrid(xs, xs)
+    vertices = np.column_stack([x.ravel(), y.ravel()])
+    j, i = np.divmod(np.arange(n * n), n)
+    a = j * (n + 1) + i
+    b, c, d = a + 1, a + n + 2, a + n + 1
+    triangles = np.empty((2 * n * n, 3), dtype=np.int64)
+    triangles[0::2] = np.column_stack([a, b, c])
+    triangles[1::2] = np.column_stack([a, c, d])
     middle = (n // 2) * (n + 1) + n // 2
     vertices[middle] += [3.5 / n, 2.5 / n]
-    boundary = [v for v in range(len(vertices)) if vertices[v][0] in (0, 1) or vertices[v][1] in (0, 1)]
-    return vertices, np.array(triangles), boundary
+    on_boundary = (vertices[:, 0] == 0) | (vertices[:, 0] == 1) | (vertices[:, 1] == 0) | (vertices[:, 1] == 1)
+    return vertices, triangles, [int(v) for v in np.flatnonzero(on_boundary)]
 
 
 class Samples(unittest.TestCase):
@@ -175,17 +177,24 @@ class Callbacks(unittest.TestCase):
                 ticks.append(1)
                 time.sleep(0.001)
 
-        vertices, triangles, boundary = tangled_square(150)
-        thread = threading.Thread(target=tick)
-        thread.start()
-        seen_in_callback = []
-        try:
-            _, result = mu.untangle(vertices, triangles, fixed=boundary, threads=1,
-                                    callback=lambda s: seen_in_callback.append(len(ticks)))
-        finally:
-            done.set()
-            thread.join()
-        self.assertTrue(result.is_locally_invertible)
+        # a grid large enough that the run lasts long enough to see the other
+        # thread tick, on a fast machine too: doubled until it does
+        n = 150
+        while True:
+            ticks.clear()
+            done.clear()
+            vertices, triangles, boundary = tangled_square(n)
+            thread = threading.Thread(target=tick)
+            thread.start()
+            try:
+                _, result = mu.untangle(vertices, triangles, fixed=boundary, threads=1)
+            finally:
+                done.set()
+                thread.join()
+            self.assertTrue(result.is_locally_invertible)
+            if result.seconds > 0.05 or n >= 1200:
+                break
+            n *= 2
         self.assertGreater(result.seconds, 0.05)
         self.assertGreater(len(ticks), 5, "the other thread did not run during %.2f s" % result.seconds)
 
