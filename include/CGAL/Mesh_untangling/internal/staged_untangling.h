@@ -122,10 +122,10 @@ void hand_back_free_vertices(const Untangling_problem<d>& P, Untangling_input<d>
 /// Stage 0: the given targets, after the published scheme's trial where
 /// Solver::AUTOMATIC asks for it (Eps_loop::tries_lbfgs_first).  Gives up on
 /// a stall early (Stall_test::COUNT_NOT_HALVED) when stage 1 would follow,
-/// and never with `never_stall` (the patient rerun of local_repair.h).
+/// and never with Stage_0::UNTIL_SETTLED (the patient rerun of local_repair.h).
 template <int d>
 Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, Eps_loop<d>& loop,
-                             bool regular_targets_follow, bool never_stall)
+                             bool regular_targets_follow, Stage_0 how)
 {
   Eps_loop_outcome outcome;
   if(in.phantom_elements == 0 && loop.tries_lbfgs_first(P)) {
@@ -137,9 +137,9 @@ Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, 
       return outcome;
     P.x = start;
   }
-  return loop.run(P, 0, never_stall             ? Stall_test::NONE
-                        : regular_targets_follow ? Stall_test::COUNT_NOT_HALVED
-                                                 : Stall_test::COUNT_STANDS);
+  return loop.run(P, 0, how == Stage_0::UNTIL_SETTLED ? Stall_test::NONE
+                        : regular_targets_follow       ? Stall_test::COUNT_NOT_HALVED
+                                                       : Stall_test::COUNT_STANDS);
 }
 
 /// Tries `repair` on the map of R, stalled; a repaired map replaces R's.
@@ -266,7 +266,7 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
      !given_targets_within_reach(result.min_scaled_det_before))
     outcome.stalled = true;   // (straight to stage 1)
   else
-    outcome = run_stage_0(P, in, loop, regular_targets_follow, options.stage_0 == Stage_0::UNTIL_SETTLED);
+    outcome = run_stage_0(P, in, loop, regular_targets_follow, options.stage_0);
   if(outcome.stalled && !options.give_up_on_stall)
     outcome = run_stages_1_and_2(P, in, loop, targets_given, outcome, repair);
   CGAL_MESH_UNTANGLING_STAGE("direct: eps loop");
