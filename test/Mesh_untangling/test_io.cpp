@@ -433,8 +433,32 @@ void test_vtk_errors()
   CHECK_READ_ERROR(read_vtk, "datatype.vtk",
                    "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 1\n0 0 0\n", 6,
                    "unknown POINTS data type '0'");
-  CHECK_READ_ERROR(read_vtk, "vtk5.vtk", head + "CELLS 2 4\nOFFSETS vtktypeint64\n0 4\n", 12,
-                   "VTK 5 OFFSETS/CONNECTIVITY");
+  // VTK 5's cells (OFFSETS, CONNECTIVITY): one offset more than cells; errors on the line of the value
+  const std::string v5 = head + "CELLS 3 8\nOFFSETS vtktypeint64\n";   // to line 12
+  const std::string connectivity = "CONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3 4\n";   // lines 14 to 16
+  const std::string types = "CELL_TYPES 2\n10\n10\n";
+  const Mesh_file v5_mesh = IO::read_VTK(write_text("vtk5.vtk", v5 + "0 4 8\n" + connectivity + types));
+  CHECK((v5_mesh.simplices == std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}})
+        && (v5_mesh.simplex_lines == std::vector<std::size_t>{15, 16}));
+  CHECK_READ_ERROR(read_vtk, "vtk5-start.vtk", v5 + "1 4 8\n" + connectivity + types, 13,
+                   "OFFSETS must start at 0, not 1");
+  CHECK_READ_ERROR(read_vtk, "vtk5-last.vtk", v5 + "0 4\n7\n" + connectivity + types, 14,
+                   "the last of OFFSETS is 7 but CONNECTIVITY has 8 entries");
+  CHECK_READ_ERROR(read_vtk, "vtk5-order.vtk",
+                   head + "CELLS 4 8\nOFFSETS vtktypeint64\n0 5 4 8\n" + connectivity + types, 13,
+                   "OFFSETS value 2 (4) is not between the previous one (5) and the CONNECTIVITY size (8)");
+  CHECK_READ_ERROR(read_vtk, "vtk5-float.vtk", head + "CELLS 3 8\nOFFSETS float\n0 4 8\n", 12,
+                   "OFFSETS must hold integers, not 'float'");
+  CHECK_READ_ERROR(read_vtk, "vtk5-missing.vtk", v5 + "0 4 8\n" + types, 14,
+                   "expected CONNECTIVITY, got 'CELL_TYPES'");
+  CHECK_READ_ERROR(read_vtk, "vtk5-trunc.vtk", v5 + "0 4 8\nCONNECTIVITY vtktypeint64\n0 1 2 3\n1 2 3\n" + types, 17,
+                   "truncated: the CONNECTIVITY block ends after 7 of 8 values (found 'CELL_TYPES')");
+  CHECK_READ_ERROR(read_vtk, "vtk5-none.vtk", head + "CELLS 0 0\nOFFSETS vtktypeint64\n", 11,
+                   "CELLS announces 0 offsets");
+  CHECK_READ_ERROR(read_vtk, "vtk5-empty.vtk", head + "CELLS 3 4\nOFFSETS vtktypeint64\n0\n0 4\n"
+                   "CONNECTIVITY vtktypeint64\n0 1 2 3\n" + types, 13, "cell 0 has no vertex");
+  CHECK_READ_ERROR(read_vtk, "vtk5-range.vtk", v5 + "0 4 8\nCONNECTIVITY vtktypeint64\n0 1 2 3\n9 2 3 4\n" + types, 16,
+                   "cell 1: vertex index 9 is out of range [0, 4] (tetrahedron)");
   CHECK_READ_ERROR(read_vtk, "tail.vtk", head + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n7\n", 15,
                    "unexpected '7' after CELL_TYPES");
   CHECK_READ_ERROR(read_vtk, "field.vtk",

@@ -501,6 +501,16 @@ void test_meshio_files(const fs::path& folder)
   CHECK(same_mesh(binary.mesh, t.mesh));
   CHECK(same_mesh(legacy_ascii.mesh, t.mesh));
   CHECK(binary.mesh.simplex_lines.empty() && legacy_ascii.mesh.simplex_lines.size() == 2);
+  // VTK 5.1 (OFFSETS and CONNECTIVITY), what meshio writes to .vtk by default, binary and ASCII: the same
+  // bits as the .vtu, the fixed vertices of the point FIELD array included (meshio's cell data, FIELD
+  // arrays too, is skipped as in its 4.2 files); an ASCII cell's line is that of its first vertex id.
+  for(const char* name : {"tets-binary-51.vtk", "tets-ascii-51.vtk", "mixed-binary-51.vtk", "mixed-ascii-51.vtk"}) {
+    const bool tets = name[0] == 't';
+    const Read r = read(__LINE__, (folder / name).string());
+    CHECK_MESSAGE(same_mesh(r.mesh, tets ? t.mesh : m.mesh), name);
+  }
+  CHECK((read(__LINE__, (folder / "tets-ascii-51.vtk").string()).mesh.simplex_lines == std::vector<std::size_t>{13, 17}));
+  CHECK(read(__LINE__, (folder / "mixed-binary-51.vtk").string()).mesh.cell_lines.empty());
 }
 
 // ---------------------------------------------------------------------------
@@ -544,6 +554,28 @@ void test_binary_legacy_edges_and_corners()
   bad.bytes[cells_data + 4 * 2 + 3] = 0;
   CHECK_READ_ERROR("binary-line-repeat.vtk", bad.bytes, 0,
                    "at byte " + std::to_string(cells_data) + ": cell 0: vertex 0 is repeated (line)");
+}
+
+// VTK 5's binary cells (OFFSETS and CONNECTIVITY, 64-bit as meshio writes them); errors name the byte.
+void test_binary_legacy_offsets()
+{
+  const auto tets = [](const std::vector<std::int64_t>& offsets) {
+    Legacy f;
+    f.text("POINTS 5 float\n").values(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1});
+    f.text("CELLS 3 8\nOFFSETS vtktypeint64\n").values(offsets);
+    f.text("CONNECTIVITY vtktypeint64\n").values(std::vector<std::int64_t>{0, 1, 2, 3, 1, 2, 3, 4});
+    f.text("CELL_TYPES 2\n").values(std::vector<std::int32_t>{10, 10});
+    return f;
+  };
+  const Read r = read(__LINE__, test::write_text(temp_path("binary-offsets.vtk"), tets({0, 4, 8}).bytes));
+  CHECK((r.mesh.simplices == std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}, {1, 2, 3, 4}})
+        && r.mesh.simplex_lines.empty());
+  const std::string bad = tets({0, 4, 9}).bytes;
+  const std::size_t offsets = bad.find("OFFSETS vtktypeint64\n") + 21;
+  CHECK_READ_ERROR("binary-offsets-last.vtk", bad, 0,
+                   "at byte " + std::to_string(offsets + 16) + ": the last of OFFSETS is 9 but CONNECTIVITY has 8 entries");
+  CHECK_READ_ERROR("binary-offsets-negative.vtk", tets({0, -4, 8}).bytes, 0,
+                   "at byte " + std::to_string(offsets + 8) + ": OFFSETS value 1 (");
 }
 
 void test_binary_legacy()
@@ -752,6 +784,7 @@ int main()
   test_round_trips();
   test_encodings();
   test_binary_legacy();
+  test_binary_legacy_offsets();
   test_binary_legacy_edges_and_corners();
   test_errors();
   test::check_fixtures(__FILE__, __LINE__, MU_VTU_FIXTURES, test_meshio_files);

@@ -34,8 +34,10 @@ namespace IO {
 /// (as write_VTK() writes its fields; `integer` for the integer types).
 /// A binary file (third line BINARY, as VTK and meshio write it) holds its
 /// numbers raw and big-endian after each section line; its errors name the
-/// byte offset, and its `simplex_lines`, `cell_lines` and `edge_lines` are empty.  The VTK 5
-/// layout of cells (OFFSETS and CONNECTIVITY) is not read, ASCII or binary.
+/// byte offset, and its `simplex_lines`, `cell_lines` and `edge_lines` are empty.  Both
+/// layouts of the cells are read, ASCII or binary: the legacy one (each cell's
+/// vertex count, then its vertices) and VTK 5's (OFFSETS and CONNECTIVITY
+/// arrays, as VTK 9, ParaView and meshio write by default).
 /// \throws Read_error if the file is missing or malformed, if
 /// its `fixed` scalar holds anything but a 0 or a 1 per point, or if a
 /// field kept has a value that is no number or two fields share a name.

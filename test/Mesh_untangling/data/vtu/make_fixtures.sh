@@ -5,7 +5,9 @@
 # hexahedron, a pyramid, a wedge and a tetrahedron, in blocks of one type),
 # each with the point array `fixed` and a cell array `quality`, written as
 # .vtu in ASCII, base64, base64 + zlib and base64 + LZMA (which the reader
-# refuses), and the tetrahedra as legacy VTK 4.2, ASCII and binary.  meshio
+# refuses), the tetrahedra as legacy VTK 4.2, ASCII and binary, and the
+# tetrahedra and the mixed cells as VTK 5.1 (OFFSETS and CONNECTIVITY, what
+# meshio writes to .vtk by default), ASCII and binary.  meshio
 # holds a wedge in Gmsh's order, which is Mesh_file's (the bottom triangle
 # counter-clockwise seen from the top), and writes it to .vtu in VTK's
 # (meshio/_vtk_common.py, meshio_to_vtk_order: 1 2 and 4 5 swapped), as our
@@ -49,4 +51,7 @@ for name, (points, kind, cells) in meshes.items():
         meshio.write(f"{name}-lzma.vtu", mesh, binary=True, compression="lzma")
         meshio.vtk.write(f"{name}-ascii.vtk", mesh, fmt_version="4.2", binary=False)
         meshio.vtk.write(f"{name}-binary.vtk", mesh, fmt_version="4.2", binary=True)
+    if name in ("tets", "mixed"):
+        meshio.vtk.write(f"{name}-ascii-51.vtk", mesh, fmt_version="5.1", binary=False)
+        meshio.vtk.write(f"{name}-binary-51.vtk", mesh, fmt_version="5.1", binary=True)
 PYTHON

@@ -154,6 +154,19 @@ public:
     return true;
   }
 
+  /// The next word, past blanks and line ends, without taking it (empty at
+  /// the end of the file): a reader's look ahead at the next section.
+  std::string_view peek_word() const
+  {
+    std::size_t at = pos_;
+    while(at < text_.size() && (is_blank(text_[at]) || text_[at] == '\n'))
+      ++at;
+    std::size_t end = at;
+    while(end < text_.size() && !is_blank(text_[end]) && text_[end] != '\n')
+      ++end;
+    return std::string_view(text_).substr(at, end - at);
+  }
+
   /// The byte offset of what comes next, for errors in binary data.
   std::size_t offset() const { return pos_; }
 

@@ -45,7 +45,8 @@ inline bool is_VTK_section(std::string_view word)
     return false;
   static constexpr std::string_view sections[] = {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA",
                                                   "FIELD", "METADATA", "SCALARS", "COLOR_SCALARS", "LOOKUP_TABLE",
-                                                  "VECTORS", "NORMALS", "TEXTURE_COORDINATES", "TENSORS"};
+                                                  "VECTORS", "NORMALS", "TEXTURE_COORDINATES", "TENSORS",
+                                                  "OFFSETS", "CONNECTIVITY"};
   for(std::string_view s : sections)
     if(same_keyword(word, s))
       return true;
@@ -112,6 +113,12 @@ inline void check_VTK_data_type(const Text_file& file, const Token& token, const
     if(same_keyword(token.text, t))
       return;
   file.fail(token.line, "unknown " + what + " data type " + quote_token(token.text));
+}
+
+inline bool is_VTK_integer_type(const Token& type)
+{
+  static const char* const floats[] = {"float", "double", "vtktypefloat32", "vtktypefloat64"};
+  return std::none_of(std::begin(floats), std::end(floats), [&](const char* f) { return same_keyword(type.text, f); });
 }
 
 // A 0 or a 1 per point: the fixed vertices.  `at` is the line of the array's
@@ -267,11 +274,8 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
   // (the messages are built only on failure: this runs once per cell of the file)
   Token size_token = next_VTK_value(file, "CELLS", i, count, "cells");
   std::size_t size = 0;
-  if(!parse_size(size_token.text, size)) {
-    if(same_keyword(size_token.text, "OFFSETS"))
-      file.fail(size_token.line, "VTK 5 OFFSETS/CONNECTIVITY cells are not supported (save as legacy 4.2)");
+  if(!parse_size(size_token.text, size))
     to_size(file, size_token, "vertex count of " + VTK_cell_what(i));   // throws
-  }
   VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, size, size_token.line, 0, {}};
   const std::string defect = VTK_vertex_count_defect(i, cell.size);
   if(!defect.empty())
@@ -314,6 +318,90 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
   return cells;
 }
 
+// One array of the VTK 5 cell layout, `name` (OFFSETS or CONNECTIVITY) with
+// `count` integers: its values, and per value the line (ASCII) or the byte
+// offset (binary) that an error about it names.
+struct VTK_id_array
+{
+  std::vector<std::size_t> values;   // (a negative or huge binary value saturates: refused by its use)
+  std::vector<std::size_t> where;
+};
+
+inline VTK_id_array read_VTK_id_array(Text_file& file, const char* name, std::size_t count, bool binary)
+{
+  Token keyword, type;
+  if(!next_VTK_token(file, keyword))
+    file.fail_truncated(std::string("expected ") + name);
+  if(!same_keyword(keyword.text, name))
+    file.fail(keyword.line, std::string("expected ") + name + ", got " + quote_token(keyword.text));
+  if(!file.next_token(type))
+    file.fail_truncated(std::string("expected the data type of ") + name);
+  check_VTK_data_type(file, type, name);
+  if(!is_VTK_integer_type(type))
+    file.fail(type.line, std::string(name) + " must hold integers, not " + quote_token(type.text));
+  VTK_id_array array;
+  if(binary) {
+    const VTK_binary_block block = read_VTK_binary_values(file, type, count, name);
+    array.values.resize(count);
+    array.where.resize(count);
+    for(std::size_t i = 0; i < count; ++i) {
+      array.values[i] = block.values[i] < 0 ? std::size_t(-1) : saturated_size(block.values[i]);
+      array.where[i] = block.offset_of(i);
+    }
+    return array;
+  }
+  array.values.reserve(file.sane_capacity(count));
+  array.where.reserve(file.sane_capacity(count));
+  for(std::size_t i = 0; i < count; ++i) {
+    const Token t = next_VTK_value(file, name, i, count, "values");
+    array.values.push_back(to_size(file, t, [name, i] { return std::string(name) + " value " + std::to_string(i); }));
+    array.where.push_back(t.line);
+  }
+  return array;
+}
+
+// The VTK 5 layout of cells, which VTK 9, ParaView and meshio write: 'CELLS
+// offsets connectivity' announces an OFFSETS array (cell i is the entries
+// offset[i] to offset[i + 1] of CONNECTIVITY: one more offset than cells)
+// and a CONNECTIVITY array, ASCII or binary.
+inline std::vector<VTK_cell> read_VTK_offset_cells(Text_file& file, const Token& keyword, std::size_t offsets,
+                                                   std::size_t size, bool binary)
+{
+  if(offsets == 0)
+    file.fail(keyword.line, "CELLS announces 0 offsets: the VTK 5 layout has one more offset than cells");
+  const VTK_id_array offset = read_VTK_id_array(file, "OFFSETS", offsets, binary);
+  const VTK_id_array connectivity = read_VTK_id_array(file, "CONNECTIVITY", size, binary);
+  const auto fail_at = [&](std::size_t where, const std::string& reason) {
+    if(binary) fail_at_byte(file, where, reason);
+    file.fail(where, reason);
+  };
+  if(offset.values[0] != 0)
+    fail_at(offset.where[0], "OFFSETS must start at 0, not " + std::to_string(offset.values[0]));
+  if(offset.values.back() != size)
+    fail_at(offset.where.back(), "the last of OFFSETS is " + std::to_string(offset.values.back())
+                                     + " but CONNECTIVITY has " + std::to_string(size) + " entries");
+  const std::size_t count = offsets - 1;
+  std::vector<VTK_cell> cells;
+  cells.reserve(count);
+  for(std::size_t i = 0; i < count; ++i) {
+    const std::size_t first = offset.values[i], end = offset.values[i + 1];
+    if(end < first || end > size)
+      fail_at(offset.where[i + 1], "OFFSETS value " + std::to_string(i + 1) + " (" + std::to_string(end)
+                                       + ") is not between the previous one (" + std::to_string(first)
+                                       + ") and the CONNECTIVITY size (" + std::to_string(size) + ")");
+    // (an error about the cell names its first vertex id, or its offset when it has none)
+    const std::size_t where = first < end ? connectivity.where[first] : offset.where[i];
+    VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - first, binary ? 0 : where, binary ? where : 0, {}};
+    const std::string defect = VTK_vertex_count_defect(i, cell.size);
+    if(!defect.empty())
+      fail_at(where, defect);
+    for(std::size_t c = 0; c < cell.size; ++c)
+      cell.set_id(c, connectivity.values[first + c]);
+    cells.push_back(std::move(cell));
+  }
+  return cells;
+}
+
 inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, bool binary = false)
 {
   Token keyword = expect_VTK_section(file, "CELLS", binary);
@@ -322,6 +410,9 @@ inline std::vector<VTK_cell> read_VTK_cells(Text_file& file, bool binary = false
     file.fail_truncated("expected 'CELLS count size'");
   const std::size_t count = to_size(file, count_token, "CELLS count");
   const std::size_t size = to_size(file, size_token, "CELLS size");
+  // (binary cells of the legacy layout start with a raw count, never with this word)
+  if(same_keyword(file.peek_word(), "OFFSETS"))
+    return read_VTK_offset_cells(file, keyword, count, size, binary);
   if(binary)
     return read_VTK_binary_cells(file, size_token, count, size);
   std::vector<VTK_cell> cells;
@@ -397,12 +488,6 @@ inline void read_VTK_fixed_scalar(Text_file& file, const Token& scalars, const s
     file.fail(scalars.line, what + " has " + std::string(header[2].text) + " components; expected 1");
   read_VTK_lookup_table(file, what);
   read_VTK_fixed_values(file, scalars.line, what, mesh, header[1], binary);
-}
-
-inline bool is_VTK_integer_type(const Token& type)
-{
-  static const char* const floats[] = {"float", "double", "vtktypefloat32", "vtktypefloat64"};
-  return std::none_of(std::begin(floats), std::end(floats), [&](const char* f) { return same_keyword(type.text, f); });
 }
 
 // 'SCALARS name type [components]' (`header`: the line after SCALARS) of one
