@@ -268,6 +268,23 @@ inline void read_VTK_points(Text_file& file, Mesh_file& mesh, bool binary = fals
   }
 }
 
+// A vertex id read as a binary number (exact up to 2^53): a negative or
+// huge one saturates, to be refused where it is used.
+inline std::size_t VTK_id_of(double value) { return value < 0 ? std::size_t(-1) : saturated_size(value); }
+
+// Cell i's ids `id_of(c)`, when its vertex count is one a cell may have and
+// fits in the `room` ids left; else what is wrong with it.
+template <class Id_of>
+std::string fill_VTK_cell(VTK_cell& cell, std::size_t i, std::size_t room, const Id_of& id_of)
+{
+  std::string defect = VTK_vertex_count_defect(i, cell.size);
+  if(defect.empty() && cell.size > room)
+    defect = "truncated: the CELLS block ends inside " + VTK_cell_what(i);
+  for(std::size_t c = 0; c < cell.size && defect.empty(); ++c)
+    cell.set_id(c, id_of(c));
+  return defect;
+}
+
 // (its vertex ids are checked with its type: add_VTK_element())
 inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
 {
@@ -277,12 +294,12 @@ inline VTK_cell read_VTK_cell(Text_file& file, std::size_t i, std::size_t count)
   if(!parse_size(size_token.text, size))
     to_size(file, size_token, "vertex count of " + VTK_cell_what(i));   // throws
   VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, size, size_token.line, 0, {}};
-  const std::string defect = VTK_vertex_count_defect(i, cell.size);
+  const std::string defect = fill_VTK_cell(cell, i, cell.size, [&](std::size_t) {
+    return to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"),
+                   [i] { return "vertex index of " + VTK_cell_what(i); });
+  });
   if(!defect.empty())
     file.fail(cell.line, defect);
-  for(std::size_t c = 0; c < cell.size; ++c)
-    cell.set_id(c, to_size(file, next_VTK_value(file, "CELLS", i, count, "cells"),
-                           [i] { return "vertex index of " + VTK_cell_what(i); }));
   return cell;
 }
 
@@ -300,13 +317,8 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
       fail_at_byte(file, block.offset_of(at), "truncated: the CELLS block ends after " + std::to_string(i) + " of "
                                                   + std::to_string(count) + " cells");
     VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, v[at] < 0 ? 0 : saturated_size(v[at]), 0, block.offset_of(at), {}};
-    std::string defect = VTK_vertex_count_defect(i, cell.size);
-    if(defect.empty() && cell.size > size - at - 1)
-      defect = "truncated: the CELLS block ends inside " + VTK_cell_what(i);
-    for(std::size_t c = 0; c < cell.size && defect.empty(); ++c) {
-      const double id = v[at + 1 + c];
-      cell.set_id(c, id < 0 ? std::size_t(-1) : saturated_size(id));
-    }
+    const std::string defect =
+      fill_VTK_cell(cell, i, size - at - 1, [&](std::size_t c) { return VTK_id_of(v[at + 1 + c]); });
     if(!defect.empty())
       fail_at_byte(file, block.offset_of(at), defect);
     at += 1 + cell.size;
@@ -318,22 +330,22 @@ inline std::vector<VTK_cell> read_VTK_binary_cells(Text_file& file, const Token&
   return cells;
 }
 
-// One array of the VTK 5 cell layout, `name` (OFFSETS or CONNECTIVITY) with
-// `count` integers: its values, and per value the line (ASCII) or the byte
-// offset (binary) that an error about it names.
+// One array of the VTK 5 cell layout, OFFSETS or CONNECTIVITY.  Binary, it
+// is the block as read (a value's byte follows from its index); ASCII, its
+// parsed values and each one's line, which an error about it names.
 struct VTK_id_array
 {
-  std::vector<std::size_t> values;   // (a negative or huge binary value saturates: refused by its use)
-  std::vector<std::size_t> where;
+  VTK_binary_block block{{}, 0, 0}; // (ASCII: the values only, exact as doubles up to 2^53)
+  std::vector<std::size_t> lines;   // ASCII only
+
+  std::size_t value(std::size_t i) const { return VTK_id_of(block.values[i]); }
+  std::size_t where(std::size_t i) const { return lines.empty() ? block.offset_of(i) : lines[i]; }
 };
 
 inline VTK_id_array read_VTK_id_array(Text_file& file, const char* name, std::size_t count, bool binary)
 {
-  Token keyword, type;
-  if(!next_VTK_token(file, keyword))
-    file.fail_truncated(std::string("expected ") + name);
-  if(!same_keyword(keyword.text, name))
-    file.fail(keyword.line, std::string("expected ") + name + ", got " + quote_token(keyword.text));
+  expect_VTK_section(file, name, binary);
+  Token type;
   if(!file.next_token(type))
     file.fail_truncated(std::string("expected the data type of ") + name);
   check_VTK_data_type(file, type, name);
@@ -341,21 +353,16 @@ inline VTK_id_array read_VTK_id_array(Text_file& file, const char* name, std::si
     file.fail(type.line, std::string(name) + " must hold integers, not " + quote_token(type.text));
   VTK_id_array array;
   if(binary) {
-    const VTK_binary_block block = read_VTK_binary_values(file, type, count, name);
-    array.values.resize(count);
-    array.where.resize(count);
-    for(std::size_t i = 0; i < count; ++i) {
-      array.values[i] = block.values[i] < 0 ? std::size_t(-1) : saturated_size(block.values[i]);
-      array.where[i] = block.offset_of(i);
-    }
+    array.block = read_VTK_binary_values(file, type, count, name);
     return array;
   }
-  array.values.reserve(file.sane_capacity(count));
-  array.where.reserve(file.sane_capacity(count));
+  array.block.values.reserve(file.sane_capacity(count));
+  array.lines.reserve(file.sane_capacity(count));
   for(std::size_t i = 0; i < count; ++i) {
     const Token t = next_VTK_value(file, name, i, count, "values");
-    array.values.push_back(to_size(file, t, [name, i] { return std::string(name) + " value " + std::to_string(i); }));
-    array.where.push_back(t.line);
+    const std::size_t id = to_size(file, t, [name, i] { return std::string(name) + " value " + std::to_string(i); });
+    array.block.values.push_back(double(id));
+    array.lines.push_back(t.line);
   }
   return array;
 }
@@ -375,28 +382,27 @@ inline std::vector<VTK_cell> read_VTK_offset_cells(Text_file& file, const Token&
     if(binary) fail_at_byte(file, where, reason);
     file.fail(where, reason);
   };
-  if(offset.values[0] != 0)
-    fail_at(offset.where[0], "OFFSETS must start at 0, not " + std::to_string(offset.values[0]));
-  if(offset.values.back() != size)
-    fail_at(offset.where.back(), "the last of OFFSETS is " + std::to_string(offset.values.back())
-                                     + " but CONNECTIVITY has " + std::to_string(size) + " entries");
+  if(offset.value(0) != 0)
+    fail_at(offset.where(0), "OFFSETS must start at 0, not " + std::to_string(offset.value(0)));
+  if(offset.value(offsets - 1) != size)
+    fail_at(offset.where(offsets - 1), "the last of OFFSETS is " + std::to_string(offset.value(offsets - 1))
+                                           + " but CONNECTIVITY has " + std::to_string(size) + " entries");
   const std::size_t count = offsets - 1;
   std::vector<VTK_cell> cells;
   cells.reserve(count);
   for(std::size_t i = 0; i < count; ++i) {
-    const std::size_t first = offset.values[i], end = offset.values[i + 1];
+    const std::size_t first = offset.value(i), end = offset.value(i + 1);
     if(end < first || end > size)
-      fail_at(offset.where[i + 1], "OFFSETS value " + std::to_string(i + 1) + " (" + std::to_string(end)
+      fail_at(offset.where(i + 1), "OFFSETS value " + std::to_string(i + 1) + " (" + std::to_string(end)
                                        + ") is not between the previous one (" + std::to_string(first)
                                        + ") and the CONNECTIVITY size (" + std::to_string(size) + ")");
     // (an error about the cell names its first vertex id, or its offset when it has none)
-    const std::size_t where = first < end ? connectivity.where[first] : offset.where[i];
+    const std::size_t where = first < end ? connectivity.where(first) : offset.where(i);
     VTK_cell cell{{0, 0, 0, 0, 0, 0, 0, 0}, end - first, binary ? 0 : where, binary ? where : 0, {}};
-    const std::string defect = VTK_vertex_count_defect(i, cell.size);
+    const std::string defect =
+      fill_VTK_cell(cell, i, size - first, [&](std::size_t c) { return connectivity.value(first + c); });
     if(!defect.empty())
       fail_at(where, defect);
-    for(std::size_t c = 0; c < cell.size; ++c)
-      cell.set_id(c, connectivity.values[first + c]);
     cells.push_back(std::move(cell));
   }
   return cells;
