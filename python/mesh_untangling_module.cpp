@@ -408,7 +408,7 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                    const py::handle& progress, const py::handle& callback, bool refine,
                    const py::handle& refine_budget, bool optimize_quality, bool slide_boundary, double feature_angle,
                    const py::handle& feature_edges, const py::handle& target_surface,
-                   const std::string& seam_translations, const py::handle& out)
+                   const std::string& seam_translations, const std::string& stop, const py::handle& out)
 {
   // Every parameter is read and checked here, before any work.
   Problem problem = make_problem(vertices, elements, rest, rest_elements, optional_string(kind, "kind"));
@@ -419,6 +419,8 @@ py::tuple untangle(const py::handle& vertices, const py::handle& elements, const
                                       {"newton", MU::Solver::NEWTON}, {"lbfgs", MU::Solver::LBFGS}});
   options.continuation = choice<MU::Continuation>(continuation, "continuation", {{"auto", MU::Continuation::AUTOMATIC},
                                                   {"never", MU::Continuation::NEVER}, {"always", MU::Continuation::ALWAYS}});
+  options.stopping_rule = choice<MU::Stopping_rule>(stop, "stop", {{"settled", MU::Stopping_rule::SETTLED_ENERGY},
+                                                    {"first-valid", MU::Stopping_rule::FIRST_VALID_MAP}});
   options.seam_translations = choice<MU::Seam_translations>(seam_translations, "seam_translations",
                                 {{"keep", MU::Seam_translations::KEEP}, {"free", MU::Seam_translations::FREE}});
   if(const auto t = optional_string(targets, "targets"))
@@ -938,7 +940,7 @@ PYBIND11_MODULE(_mesh_untangling, m)
         py::arg("max_iterations"), py::arg("time_limit"), py::arg("threads"), py::arg("progress"),
         py::arg("callback"), py::arg("refine"), py::arg("refine_budget"), py::arg("optimize_quality"),
         py::arg("slide_boundary"), py::arg("feature_angle"), py::arg("feature_edges"), py::arg("target_surface"),
-        py::arg("seam_translations"), py::arg("out"));
+        py::arg("seam_translations"), py::arg("stop"), py::arg("out"));
   m.def("_check_local_invertibility", &check, py::arg("vertices"), py::arg("elements"), py::kw_only(),
         py::arg("rest"), py::arg("rest_elements"), py::arg("kind"), py::arg("fixed"));
   m.def("_read", &read_file, py::arg("path"), py::arg("weld"));

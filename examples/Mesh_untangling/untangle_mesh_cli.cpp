@@ -51,7 +51,8 @@ namespace {
 
 struct Arguments
 {
-  std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto";
+  std::string input, rest, fixed, output, report, solver = "auto", init = "given", continuation = "auto",
+              stop = "settled";
   std::string targets = "rest";   // the shapes the energy pulls toward: the rest's, or regular simplices
   std::string svg, svg_input;   // pictures of the result and of the input (2D maps)
   std::string phantoms;         // the phantom elements used, as a mesh
@@ -500,6 +501,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["refinement"] = args.refine;
   j["vertices_added"] = r.vertices_added;
   j["optimize_quality"] = args.optimize_quality;
+  j["stop"] = args.stop;
   j["min_quality_before_optimization"] = optional_figure(r.min_quality_before_optimization);
   j["min_quality_after_optimization"] = optional_figure(r.min_quality_after_optimization);
   j["sliding_boundary"] = args.slide_boundary;
@@ -620,6 +622,7 @@ Run_options run_options(const Arguments& args, const Mesh_file& mesh, Progress_d
   options.regular_targets = args.targets == "regular";
   options.refinement_budget = args.refine_budget;
   options.optimize_quality = args.optimize_quality;
+  options.stopping_rule = *MU::stopping_rule_from_string(args.stop);   // (CLI11 admits only the rules' names)
   options.sliding_boundary = args.slide_boundary;
   options.feature_angle = args.feature_angle;
   if(args.slide_boundary) options.feature_edges = mesh.edges;
@@ -865,6 +868,7 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["quad_vertices"] = quads.mesh.rest.size();
   j["open_grid_edges"] = quads.open_edges;
   j["phantom_protection"] = false;
+  j["stop"] = args.stop;
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
   j["status"] = MU::to_string(r.status);
@@ -1147,6 +1151,11 @@ int main(int argc, char** argv)
                  "default) or 'regular' (regular simplices: better conditioned; the rest, when given, still decides "
                  "which orientation is right)")
     ->check(CLI::IsMember({"rest", "regular"}));
+  app.add_option("--stop", args.stop, "when the untangling stops: 'settled' (the default: goes on from the first "
+                 "locally invertible map until the energy toward the targets settles, shaping the elements like them) "
+                 "or 'first-valid' (at the first map with every element positive, as the peers that only untangle: "
+                 "faster, but elements may be left nearly flat); the verdict is the same")
+    ->check(CLI::IsMember({"settled", "first-valid"}));
   app.add_option("--init", args.init, "initial map: 'given' (from the file) or 'project' (a triangulated surface "
                  "projected on its best-fit plane; the surface is the rest)")
     ->check(CLI::IsMember({"given", "project"}));

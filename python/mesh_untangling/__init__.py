@@ -34,7 +34,7 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
              progress=None, callback=None, refine=False, refine_budget=None, optimize_quality=False,
              slide_boundary=False, feature_angle=35.0, feature_edges=None, target_surface=None, kind=None,
              rest_elements=None,
-             seam_translations="keep", out=None):
+             seam_translations="keep", stop="settled", out=None):
     """Moves the free vertices of a mesh until it is locally invertible.
 
     Returns ``(new_vertices, result)``: the map as an array of the shape of
@@ -107,6 +107,12 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
         leaving the locally invertible maps or moving a fixed vertex; the
         better map is returned, ``result.min_quality_before_optimization``
         and ``result.min_quality_after_optimization`` give the figures.
+    stop : {"settled", "first-valid"}
+        When the untangling stops: "settled" (default) goes on from the first
+        locally invertible map until the energy toward the targets settles;
+        "first-valid" stops at the first map with every element positive, as
+        the untanglers that only untangle do: faster, but elements may be
+        left nearly flat.  The verdict is the same.
     slide_boundary : bool
         The boundary vertices that are not fixed slide on the boundary as
         given: on their surface patch, or on their feature curve (an edge
@@ -161,7 +167,8 @@ def untangle(vertices, elements, *, rest=None, fixed=None, targets=None, theta=N
                            time_limit=time_limit, threads=threads, progress=progress, callback=callback,
                            refine=refine, refine_budget=refine_budget, optimize_quality=optimize_quality,
                            slide_boundary=slide_boundary, feature_angle=feature_angle,
-                           feature_edges=feature_edges, target_surface=target_surface, seam_translations=seam_translations, out=out)
+                           feature_edges=feature_edges, target_surface=target_surface, seam_translations=seam_translations,
+                           stop=stop, out=out)
 
 
 def check_local_invertibility(vertices, elements, *, rest=None, fixed=None, kind=None, rest_elements=None):

@@ -396,6 +396,23 @@ check "--targets regular: inverted_after 0" json_is cube_regular.json inverted_a
 check "--targets regular: handles unchanged" [ "$(handle_rows cube.input)" = "$(handle_rows cube-regular.input)" ]
 differ() { ! cmp -s "$1" "$2"; }
 check "--targets regular: another map than the rest's targets give" differ cube-untangled.input cube-regular.input
+# --stop first-valid: the same cube stops at its first map with every
+# tetrahedron positive, before the energy settles: fewer evaluations, the
+# same verdict; from that valid map, it takes no eps step at all.
+run cube_first cube.input --stop first-valid -o cube-first.input --report cube_first.json -q
+check "--stop first-valid: exit 0" rc_is cube_first 0
+check "--stop first-valid: reported" json_is cube_first.json stop '"first-valid"'
+check "--stop settled (the default): reported" json_is cube.json stop '"settled"'
+check "--stop first-valid: inverted_after 0" json_is cube_first.json inverted_after 0
+check "--stop first-valid: locally invertible" json_is cube_first.json locally_invertible true
+check "--stop first-valid: handles unchanged" [ "$(handle_rows cube.input)" = "$(handle_rows cube-first.input)" ]
+check "--stop first-valid: fewer energy evaluations than settled" \
+  [ "$(json_get cube_first.json energy_evaluations)" -lt "$(json_get cube.json energy_evaluations)" ]
+run cube_first_again cube-first.input --stop first-valid -o cube-first-again.input --report cube_first_again.json -q
+check "--stop first-valid from a valid map: exit 0" rc_is cube_first_again 0
+check "--stop first-valid from a valid map: no eps step" json_is cube_first_again.json outer_iterations 0
+run cube_first_settled cube-first.input -o cube-first-settled.input --report cube_first_settled.json -q
+check "--stop settled from that valid map: it polishes (eps steps)" json_at_least cube_first_settled.json outer_iterations 1
 run cube_vtk small3d.input -o cube.vtk --report cube_vtk.json -q
 check "cube -o .vtk: exit 0" rc_is cube_vtk 0
 check "cube -o .vtk: small cube was tangled" json_positive cube_vtk.json inverted_before
@@ -509,6 +526,7 @@ fails unknown_extension "s4\\.xyz: unsupported file extension '\\.xyz'" s4.xyz
 fails unknown_output_extension "out\\.ply: unsupported output extension" square.input -o out.ply
 fails unknown_solver 'solver.*foo' square.input --solver foo
 fails unknown_targets 'targets: .*foo' square.input --targets foo
+fails unknown_stop 'stop: never not in \{settled,first-valid\}' square.input --stop never
 fails regular_targets_refined "--refine untangles toward the rest's shapes: it does not take --targets regular" \
   cube.input --targets regular --refine -o x.input
 fails theta_too_big 'theta.*2' square.input --theta 2

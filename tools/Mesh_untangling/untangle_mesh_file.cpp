@@ -123,9 +123,10 @@ auto run_parameters(const Run_options& options, const Chain& chain, const FixedM
          MU::parameters::feature_edges(std::cref(options.feature_edges),
          MU::parameters::target_surface(std::cref(options.target_surface),
          MU::parameters::optimize_quality(options.optimize_quality,
+         MU::parameters::stopping_rule(options.stopping_rule,
          MU::parameters::progress_callback(options.progress_fraction,
            chain.vertex_is_constrained_map(fixed).number_of_iterations(options.max_iterations)
-                .maximum_running_time(options.max_seconds).callback(callback)))))));
+                .maximum_running_time(options.max_seconds).callback(callback))))))));
 }
 
 template <typename Inner>

@@ -58,6 +58,8 @@ struct Run_options
   /// Mesh_untangling::parameters::optimize_quality: from a locally invertible
   /// result, raise the worst element's quality
   bool optimize_quality = false;
+  /// Mesh_untangling::parameters::stopping_rule
+  CGAL::Mesh_untangling::Stopping_rule stopping_rule = CGAL::Mesh_untangling::Stopping_rule::SETTLED_ENERGY;
   /// Mesh_untangling::parameters::sliding_boundary and feature_angle: the
   /// boundary slides on the input's own surface patches and feature curves
   bool sliding_boundary = false;

@@ -41,6 +41,7 @@ enum mesh_untangling_added_vertices_output_t { mesh_untangling_added_vertices_ou
 enum mesh_untangling_seam_translations_t { mesh_untangling_seam_translations };
 enum mesh_untangling_seam_transitions_t { mesh_untangling_seam_transitions };
 enum mesh_untangling_verdict_output_t { mesh_untangling_verdict_output };
+enum mesh_untangling_stopping_rule_t { mesh_untangling_stopping_rule };
 } // namespace internal_np
 
 namespace Mesh_untangling {
@@ -108,6 +109,36 @@ enum class Continuation
   NEVER,       ///< the direct untangling only: the published scheme
   ALWAYS       ///< the continuation only (where it applies; otherwise the direct untangling)
 };
+
+/// \ingroup PkgMeshUntanglingRef
+/// When the untangling of the given map stops.  The published scheme goes on
+/// from its first locally invertible map until the energy toward the targets
+/// settles, which shapes the elements like their targets; the peers that
+/// only untangle (TLC, and the scheme of Protais et al. run to a valid map)
+/// stop at the first map with every element positive, which is faster
+/// (half the seconds of the CuboidBlocks the peers solve) but may leave
+/// elements nearly flat.  Either way the verdict is the same exact one.
+enum class Stopping_rule
+{
+  SETTLED_ENERGY,    ///< go on until the energy settles (default: the published scheme)
+  FIRST_VALID_MAP    ///< stop at the first map with every element (phantoms too) positive
+};
+
+/// \ingroup PkgMeshUntanglingRef
+/// The name of `rule` as `stopping_rule_from_string()` and the command-line tool read it: "settled" or "first-valid".
+inline std::string to_string(Stopping_rule rule)
+{
+  return rule == Stopping_rule::FIRST_VALID_MAP ? "first-valid" : "settled";
+}
+
+/// \ingroup PkgMeshUntanglingRef
+/// The rule that `to_string()` names `name`; none for another name.
+inline std::optional<Stopping_rule> stopping_rule_from_string(const std::string& name)
+{
+  for(Stopping_rule rule : {Stopping_rule::SETTLED_ENERGY, Stopping_rule::FIRST_VALID_MAP})
+    if(to_string(rule) == name) return rule;
+  return std::nullopt;
+}
 
 /// \ingroup PkgMeshUntanglingRef
 /// Default number of equal steps the continuation starts with (each halved when it fails).
@@ -241,6 +272,14 @@ CGAL_MESH_UNTANGLING_PARAMETER(refinement, mesh_untangling_refinement_t)
 /// `min_quality_after_optimization`).  Not for seamless maps, nor with
 /// phantom elements given by the caller: the map is then as untangled.
 CGAL_MESH_UNTANGLING_PARAMETER(optimize_quality, mesh_untangling_optimize_quality_t)
+/// \ingroup PkgMeshUntanglingNamedParameters
+/// A `CGAL::Mesh_untangling::Stopping_rule`: whether the untangling of the
+/// given map goes on until its energy settles (default
+/// `Stopping_rule::SETTLED_ENERGY`) or stops at its first map with every
+/// element positive (`Stopping_rule::FIRST_VALID_MAP`).  It rules the
+/// direct untangling, the continuation's steps and the local repair alike;
+/// the quality rung, when asked for, still polishes the map it is given.
+CGAL_MESH_UNTANGLING_PARAMETER(stopping_rule, mesh_untangling_stopping_rule_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// `bool`: the boundary vertices that are not fixed slide on the boundary
 /// of the input as given (default `false`: they are free).  A boundary

@@ -101,6 +101,15 @@ class Samples(unittest.TestCase):
         self.same_as_cli("square", ["--solver", "lbfgs", "--targets", "regular", "--theta", "0.25"],
                          solver="lbfgs", targets="regular", theta=0.25)
 
+    def test_stop_at_the_first_valid_map(self):
+        # the same bits as the CLI's --stop first-valid, in fewer evaluations than the settled run
+        mesh, vertices, result = self.same_as_cli("cube", ["--stop", "first-valid"], stop="first-valid")
+        self.assertTrue(result.is_locally_invertible)
+        settled = self.same_as_cli("cube")[2]
+        self.assertLess(result.energy_evaluations, settled.energy_evaluations)
+        with self.assertRaisesRegex(ValueError, "stop='never': expected one of"):
+            mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, stop="never")
+
     def test_thread_counts_give_the_same_bits(self):
         mesh = mu.read(os.path.join(self.dir.name, "cube.input"))
         one, _ = mu.untangle(mesh.vertices, mesh.elements, rest=mesh.rest, fixed=mesh.fixed, threads=1)

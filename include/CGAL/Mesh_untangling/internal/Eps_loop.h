@@ -136,6 +136,13 @@ public:
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   bool out_of_time() const { return internal::out_of_time(options_); }
 
+  /// Where a stage whose map is the run's result stops (Stopping_rule).
+  Eps_loop_goal final_goal() const
+  {
+    return options_.stopping_rule == Stopping_rule::FIRST_VALID_MAP ? Eps_loop_goal::VALID_MAP
+                                                                    : Eps_loop_goal::SETTLED_ENERGY;
+  }
+
   std::size_t eps_steps_left() const
   { return options_.max_outer_iterations - (std::min)(steps_, options_.max_outer_iterations); }
 
@@ -174,14 +181,14 @@ public:
     const double flops = predicted_flops(P);
     solver_ = Solver::LBFGS;
     trial_evaluations_left_ = lbfgs_trial_evaluations;
-    out = run(P, 0, Stall_test::COUNT_STANDS);
+    out = run(P, 0, Stall_test::COUNT_STANDS, final_goal());
     trial_evaluations_left_ = unlimited;
     const auto ends_valid = [&] {
       return !out.stalled && !out.numerical_failure && determinant_summary(P, P.x.data()).non_positive == 0 &&
              locally_invertible();
     };
     const bool went_on = out.trial_budget_spent && ends_valid();
-    if(went_on) out = run(P, 0, Stall_test::COUNT_STANDS);
+    if(went_on) out = run(P, 0, Stall_test::COUNT_STANDS, final_goal());
     if(!out.stopped && ends_valid()) {
       result_.solver = to_string(Solver::LBFGS) + " (tried first: a Newton factorization would cost about " +
                        std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element" +
@@ -216,6 +223,11 @@ public:
     const double eps_cap = largest_epsilon(P);
     double eps = newton && summary.min_det > 0 ? tiny_epsilon : std::min(initial_epsilon(summary.min_det), eps_cap);
     const std::size_t initial_count = summary.non_positive;
+    if(goal == Eps_loop_goal::VALID_MAP && summary.min_det > 0) {   // (valid already: no step to take)
+      out.energy = energy<d>(P, P.x.data(), eps, theta_);
+      out.epsilon = eps;
+      return out;
+    }
     std::size_t best = stall == Stall_test::COUNT_FALLS_AFTER_FIRST_STEP ? std::numeric_limits<std::size_t>::max()
                                                                          : initial_count;
     std::size_t since_best = 0;

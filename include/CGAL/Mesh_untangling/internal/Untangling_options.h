@@ -65,6 +65,7 @@ struct Untangling_options
   std::size_t refinement_budget = default_refinement_budget;
   // The quality rung after a locally invertible result (driver/quality_rung.h).
   bool optimize_quality = false;
+  Stopping_rule stopping_rule = Stopping_rule::SETTLED_ENERGY;
   // Boundary vertices slide on the input's boundary surface and its feature
   // curves (driver/sliding_rounds.h); an edge is a feature when its facets'
   // planes meet at more than feature_angle degrees.

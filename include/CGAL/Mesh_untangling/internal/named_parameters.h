@@ -62,6 +62,8 @@ Untangling_options read_options(const NamedParameters& np)
   o.refinement_budget = choose_parameter(get_parameter(np, internal_np::mesh_untangling_refinement_budget),
                                          Mesh_untangling::default_refinement_budget);
   o.optimize_quality = choose_parameter(get_parameter(np, internal_np::mesh_untangling_optimize_quality), false);
+  o.stopping_rule = choose_parameter(get_parameter(np, internal_np::mesh_untangling_stopping_rule),
+                                     Stopping_rule::SETTLED_ENERGY);
   o.sliding_boundary = choose_parameter(get_parameter(np, internal_np::mesh_untangling_sliding_boundary), false);
   o.feature_angle = choose_parameter(get_parameter(np, internal_np::mesh_untangling_feature_angle), 35.);
   if(const std::string refused = feature_angle_refusal(o.feature_angle); !refused.empty()) o.invalid_parameter = refused;

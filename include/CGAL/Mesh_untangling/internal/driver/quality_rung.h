@@ -383,6 +383,7 @@ void optimize_quality(Untangling_input<d>& in, const Untangling_options& options
     Untangling_options o = options;
     o.max_outer_iterations -= std::min(o.max_outer_iterations, r.outer_iterations);
     o.scaling = Target_scaling::AS_GIVEN;   // (the targets are the elements' own sizes)
+    o.stopping_rule = Stopping_rule::SETTLED_ENERGY;   // (from a valid map: the polish is the point)
     Phantom_elements<d> phantoms;
     const Untangling_result polished = untangle_directly<d>(ideal, o, protection, &phantoms);
     add_counts(r, polished);
