@@ -182,6 +182,12 @@ inline Untangling_status final_status(const Invertibility_report& report, bool n
   return Untangling_status::COVERINGS_LEFT;
 }
 
+/// The status of a map that the verdict alone judges, no run having stopped on it.
+inline Untangling_status verdict_status(const Invertibility_report& report)
+{
+  return final_status(report, false, false, false);
+}
+
 /// Describes in `r` the map `in` that a step after the runs left (the
 /// local repair, the refinement, the quality rung, a projection of sliding
 /// vertices): the exact verdict and the figures; the status is the
@@ -194,7 +200,7 @@ void describe_map(const Untangling_input<d>& in, const Untangling_options& optio
   const Invertibility_report report = check_mesh<d>(in, P.reference_orientation);
   record_verdict(report, r);
   if(report.has_no_repairable_defect() || report.inverted_elements == 0 || reached_goal(r.status)) {
-    r.status = final_status(report, false, false, false);
+    r.status = verdict_status(report);
     r.message = r.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(report) : "";
   }
   r.min_scaled_det_after = determinant_summary(P, P.x.data()).min_det;

@@ -38,7 +38,7 @@ void keep_the_input_if_better(Untangling_input<d>& in, std::vector<Eigen::Matrix
   }
   kept.input_returned = true;
   if(input.has_no_repairable_defect()) {
-    kept.status = final_status(input, false, false, false);
+    kept.status = verdict_status(input);
     kept.message = kept.status == Untangling_status::UNREPAIRABLE_DEFECTS_LEFT ? unrepairable_defects_message(input) : "";
   }
   else if(r.status == Untangling_status::INVERTED_ELEMENTS_LEFT || r.status == Untangling_status::COVERINGS_LEFT)

@@ -406,7 +406,7 @@ void optimize_quality(Untangling_input<d>& in, const Untangling_options& options
     Untangling_input<d> local = current;
     const double quality = raise_worst_locally<d>(local, orientation, options);
     if(quality > best &&
-       final_status(check_mesh<d>(local, orientation), false, false, false) == Untangling_status::SUCCESS) {
+       verdict_status(check_mesh<d>(local, orientation)) == Untangling_status::SUCCESS) {
       best = quality;
       current.positions = std::move(local.positions);
       lifted = true;
