@@ -44,7 +44,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Arguments
 {
-  std::string input, rest, fixed, output, report;
+  std::string input, rest, fixed, output, report, stop = "settled";
   bool fix_boundary = false, quiet = false, parts = false;
   int threads = 1;
   double theta = -1, time_limit = -1;
@@ -178,12 +178,13 @@ MU::Untangling_result with_parameters(const Arguments& args, const std::vector<b
     return true;
   };
   const auto np = MU::parameters::theta(args.theta >= 0 ? args.theta : MU::default_theta(d),
+                  MU::parameters::stopping_rule(*MU::stopping_rule_from_string(args.stop),
                   MU::parameters::verdict_output(&verdict,
                     CGAL::parameters::vertex_is_constrained_map(
                       boost::make_function_property_map<std::size_t, bool>([&fixed](std::size_t v) { return bool(fixed[v]); }))
                       .number_of_iterations(args.max_iterations)
                       .maximum_running_time(args.time_limit >= 0 ? args.time_limit : std::numeric_limits<double>::infinity())
-                      .callback(std::function<bool(const MU::Untangling_step&)>(progress))));
+                      .callback(std::function<bool(const MU::Untangling_step&)>(progress)))));
   int rest_given = soup.rest.empty() ? 0 : 1;   // (the same choice on every process)
   MPI_Allreduce(MPI_IN_PLACE, &rest_given, 1, MPI_INT, MPI_MAX, comm);
   return rest_given ? call(MU::parameters::rest_points(soup.rest, np)) : call(np);
@@ -232,6 +233,7 @@ void write_report(const std::string& path, const Arguments& args, const Problem&
   j["fixed_vertices"] = r.number_of_fixed_vertices;
   j["degenerate_targets_replaced"] = r.degenerate_targets_replaced;
   j["solver"] = r.solver;
+  j["stop"] = args.stop;
   j["status"] = MU::to_string(r.status);
   j["message"] = r.message;
   j["locally_invertible"] = v.is_locally_invertible();
@@ -393,6 +395,9 @@ int main(int argc, char** argv)
     ->check(CLI::NonNegativeNumber);
   app.add_option("--time-limit", args.time_limit, "seconds (process 0's clock, read at every energy evaluation); the map at the end of that eps step is the result")
     ->check(CLI::NonNegativeNumber);
+  app.add_option("--stop", args.stop, "when the untangling stops: 'settled' (the default: when the energy settles) "
+                 "or 'first-valid' (at the first map with every element positive), as untangle_mesh --stop")
+    ->check(CLI::IsMember({"settled", "first-valid"}));
   app.add_option("--threads", args.threads, "threads per process (default 1: one process per core); the result "
                  "is the same, bit for bit, with any number")->check(CLI::Range(1, Mesh_untangling_tools::max_thread_count));
   app.add_flag("--parts", args.parts, "INPUT, --rest and --output are part files, one per process, '%' in their "

@@ -50,6 +50,8 @@ Loop_settings loop_settings(const NamedParameters& np)
                                           std::numeric_limits<double>::infinity());
   settings.callback = choose_parameter(get_parameter(np, internal_np::callback),
                                        std::function<bool(const Mesh_untangling::Untangling_step&)>());
+  settings.stopping_rule = choose_parameter(get_parameter(np, internal_np::mesh_untangling_stopping_rule),
+                                            Mesh_untangling::Stopping_rule::SETTLED_ENERGY);
   return settings;
 }
 

@@ -101,6 +101,21 @@ check "--time-limit 0: the status says why" json_is time-limit.json status \
   '"the time limit was reached before the map became locally invertible"'
 check "--time-limit 0: one eps step" json_is time-limit.json eps_steps 1
 
+# --stop first-valid: every process stops at the first map with every
+# tetrahedron positive, in fewer evaluations than the settled run, with the
+# fixed vertices in place; from that valid map, no eps step at all.
+mpi first-valid 2 cube.vtk --rest cube-rest.vtk -o first-valid.vtk --report first-valid.json --stop first-valid -q
+check "--stop first-valid, 2 processes: exit 0" ran_well first-valid
+check "--stop first-valid: reported" json_is first-valid.json stop '"first-valid"'
+check "--stop settled (the default): reported" json_is cube-2.json stop '"settled"'
+check "--stop first-valid: locally invertible" test "$(json first-valid.json locally_invertible)" = True
+check "--stop first-valid: fewer evaluations than settled" \
+  test "$(json first-valid.json energy_evaluations)" -lt "$(json cube-2.json energy_evaluations)"
+check "--stop first-valid: the fixed vertices bit for bit in place" same_fixed cube.vtk first-valid.vtk
+mpi first-valid-again 2 first-valid.vtk --rest cube-rest.vtk -o again.vtk --report again.json --stop first-valid -q
+check "--stop first-valid from a valid map: exit 0" ran_well first-valid-again
+check "--stop first-valid from a valid map: no eps step" json_is again.json eps_steps 0
+
 # Bad input: every process stops, process 0 says why, nothing is written.
 # expect_refusal NAME MESSAGE ARGUMENTS...: with -o NAME-out.vtk added (unless NAME is no-output).
 expect_refusal() {
@@ -118,6 +133,7 @@ expect_refusal rest-size "square-rest.vtk: 625 vertices, but cube.vtk has 343" c
 "$MAKE" quadsquare 4 0.2 1 quads.vtk > make-quads.out 2>&1
 expect_refusal quads "no triangle or tetrahedron" quads.vtk
 expect_refusal theta "theta must be in [0, 1]" cube.vtk --theta 3
+expect_refusal stop "--stop: never not in {settled,first-valid}" cube.vtk --stop never
 expect_refusal no-output "--output is required" cube.vtk
 printf '0\n9999\n' > far.txt
 expect_refusal far-id "far.txt" cube.vtk --fixed far.txt

@@ -18,6 +18,7 @@
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
 #include <CGAL/Mesh_untangling/internal/solvers/LBFGS_solver.h>
+#include <CGAL/Mesh_untangling/parameters.h>
 
 #include <mpi.h>
 
@@ -43,6 +44,7 @@ struct Loop_settings
   std::size_t max_outer_iterations = 5000;
   double max_seconds = std::numeric_limits<double>::infinity();
   double largest_epsilon = std::numeric_limits<double>::infinity();   // (MU::largest_epsilon)
+  Stopping_rule stopping_rule = Stopping_rule::SETTLED_ENERGY;
   /// asked on process 0 after every eps step; false stops the run
   std::function<bool(const Untangling_step&)> callback;
 };
@@ -81,6 +83,13 @@ public:
     MU::Chunked_LBFGS curvature([this](double part) { return sum(part); });
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(P_.x.data(), Eigen::Index(unknowns_));
     Eigen::VectorXd gradient(x.size());
+    const bool first_valid = settings_.stopping_rule == Stopping_rule::FIRST_VALID_MAP;
+    if(first_valid && summary.min_det > 0) {   // (valid already: no step to take)
+      out.energy = evaluate(x, eps, gradient);
+      out.epsilon = eps;
+      out.min_det_after = summary.min_det;
+      return out;
+    }
     while(out.outer_iterations < settings_.max_outer_iterations && total_elements_ > 0) {
       const double E_prev = evaluate(x, eps, gradient);
       const Eigen::VectorXd previous = x;
@@ -97,7 +106,7 @@ public:
                                  inner.iterations, inner.evaluations, seconds(), 0};
       const bool go_on = rank_ != 0 || !settings_.callback || settings_.callback(info);
       if(!agreed_on_process_0(go_on)) { out.stopped = true; break; }
-      if(MU::energy_settled(E, E_prev, summary.min_det)) break;
+      if(first_valid ? summary.min_det > 0 : MU::energy_settled(E, E_prev, summary.min_det)) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(summary.non_positive > 0 && ++since_best >= stall_patience) break;
       const double next_eps =
