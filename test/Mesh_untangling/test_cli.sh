@@ -177,6 +177,16 @@ check "free boundary without phantoms: exit 0" rc_is free 0
 check "free boundary without phantoms: no fixed vertex" json_is free.json fixed_vertices 0
 check "free boundary without phantoms: nothing on stdout" empty free.out
 check "free boundary without phantoms: nothing on stderr (-q)" empty free.err
+# The same free boundary with phantoms, settled and --stop first-valid: both
+# locally invertible, the first valid map in fewer evaluations.
+run free_settled free.off -q -o free-settled.vtk --report free_settled.json
+run free_first free.off -q -o free-first.vtk --report free_first.json --stop first-valid
+check "free boundary, --stop first-valid: exit 0" rc_is free_first 0
+check "free boundary, --stop first-valid: phantoms" json_positive free_first.json phantom_elements
+check "free boundary, --stop first-valid: locally invertible" json_is free_first.json locally_invertible true
+check "free boundary, settled: exit 0" rc_is free_settled 0
+check "free boundary, --stop first-valid: fewer evaluations than settled" \
+  [ "$(json_get free_first.json energy_evaluations)" -lt "$(json_get free_settled.json energy_evaluations)" ]
 # A tangled tetrahedral mesh with nothing fixed: the eps bound keeps the
 # schedule from flattening it (it ended with every tetrahedron flat, exit 1).
 "$MAKE" cube 6 1 3 free3.mesh > /dev/null 2>&1

@@ -48,6 +48,16 @@ for shape in torus:10:0:100:0 seamcube:6:8:216:2 pillow:6:4:72:2 staircase:3:249
   check "$name: V - F = $euler" [ $(( $(grep -c '^v ' "$name-quads.obj") - quads )) = "$euler" ]
 done
 
+# --stop first-valid on a seamless map: locally invertible, the cones kept,
+# in fewer evaluations than the settled run above
+"$UNTANGLE" torus.obj -o torus-first.obj --report torus-first.json --stop first-valid --quiet
+check "torus, --stop first-valid: exit 0" [ $? = 0 ]
+check "torus, --stop first-valid: locally invertible" [ "$(json torus-first.json locally_invertible)" = True ]
+check "torus, --stop first-valid: only the cones are singular" \
+  [ "$(json torus-first.json integer_grid_singular_vertices_after)" = 0 ]
+check "torus, --stop first-valid: fewer evaluations than settled" \
+  [ "$(json torus-first.json energy_evaluations)" -lt "$(json torus.json energy_evaluations)" ]
+
 # seams as duplicated v: welded, the same uv as with shared v, written back with the file's vertices
 python3 "$to_duplicated_vertices" torus.obj torus-dup.obj
 "$UNTANGLE" torus-dup.obj -o torus-dup-out.obj --report torus-dup.json 2> torus-dup.err
