@@ -232,6 +232,9 @@ void write_report(const std::string& path, const Arguments& args, const Problem&
   j["elements"] = r.number_of_elements;
   j["fixed_vertices"] = r.number_of_fixed_vertices;
   j["degenerate_targets_replaced"] = r.degenerate_targets_replaced;
+  j["phantom_elements"] = r.number_of_phantom_elements;
+  j["phantom_vertices"] = r.number_of_phantom_vertices;
+  j["incomplete_phantom_stars"] = r.incomplete_phantom_stars;
   j["solver"] = r.solver;
   j["stop"] = args.stop;
   j["status"] = MU::to_string(r.status);
@@ -403,7 +406,8 @@ int main(int argc, char** argv)
   app.add_flag("--parts", args.parts, "INPUT, --rest and --output are part files, one per process, '%' in their "
                "names standing for its number: each process reads and writes its own (.vtk or .vtu with the point "
                "and cell fields 'global_id' and the point field 'fixed', as mesh_parts split writes them); no "
-               "process holds the whole mesh.  The boundary must be fixed");
+               "process holds the whole mesh; a free boundary is protected by each process over its own vertices' "
+               "stars, with the serial run's phantoms");
   app.add_flag("-q,--quiet", args.quiet, "no line per eps step on stderr");
   app.set_version_flag("-V,--version", std::string("untangle_mesh_mpi ") + CGAL_MESH_UNTANGLING_VERSION);
   int code = 0;

@@ -191,11 +191,16 @@ untangle_simplex_soup_distributed(MPI_Comm comm, PointRange& points, const Simpl
 /// - every simplex is given by exactly one process;
 /// - a point that several processes use has the same global id on each, and
 ///   the same position and fixed flag (else the run is refused, naming it);
-/// - the boundary is fixed: a free point on the boundary is refused, since
-///   a free boundary needs phantom elements over whole boundary stars (give
-///   such a mesh to `untangle_simplex_soup_distributed()`);
 /// - no facet is shared by more than two simplices, no two simplices have
 ///   the same points (refused, naming the global ids).
+///
+/// A free boundary is protected as the serial entry points protect it:
+/// phantom elements are local to a vertex star, so each process builds
+/// those of its own points' stars (whole once the elements around them
+/// have come), with the construction a serial run applies to the whole
+/// mesh, in the whole mesh's order; a phantom tetrahedron that two
+/// processes propose is kept by the lower.  The phantoms then join their
+/// process's own simplices, and the part is built again with them.
 ///
 /// Must be called by every process of `comm`, which must have initialized
 /// PETSc; a process may have no simplex.
@@ -219,6 +224,9 @@ untangle_simplex_soup_distributed(MPI_Comm comm, PointRange& points, const Simpl
 ///   \cgalParamNBegin{Mesh_untangling::parameters::rest_points}
 ///     \cgalParamDescription{one rest point per point of `points`, as for `untangle_simplex_soup()`;
 ///       given on every process or on none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Mesh_untangling::parameters::phantom_protection}
+///     \cgalParamDescription{as for `untangle_simplex_soup()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations, maximum_running_time, Mesh_untangling::parameters::theta, callback,
 ///                    Mesh_untangling::parameters::verdict_output}
@@ -289,13 +297,14 @@ untangle_simplex_soup_parts(MPI_Comm comm, PointRange& points, const IdRange& po
     return result;
   }
   MD::Whole_mesh whole;
-  whole.vertices = std::numeric_limits<std::size_t>::max();   // (no phantoms)
-  whole.check_facets = whole.fixed_boundary_only = true;
+  whole.vertices = std::numeric_limits<std::size_t>::max();   // (phantom vertices get ids above the mesh's)
+  whole.check_facets = whole.find_free_boundary = true;
+  whole.phantoms = choose_parameter(get_parameter(np, internal_np::mesh_untangling_phantom_protection), true);
   result.number_of_elements = elements;
   MD::Part_result<d> out;
   result = MD::untangle_parts<d>(comm, std::move(mine), whole, settings, result, start, verdict, out);
   if(result.status != Mesh_untangling::Untangling_status::INVALID_INPUT) {
-    unsigned long own = out.part.own_vertices;
+    unsigned long own = out.part.own_mesh_vertices;
     MPI_Allreduce(MPI_IN_PLACE, &own, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
     result.number_of_vertices = own;
     std::size_t v = 0;

@@ -22,11 +22,10 @@ type but a set of requirements on the ranges every process passes, as
 - the rest points (`Mesh_untangling::parameters::rest_points`), if given,
   one per point, on every process.
 
-The whole mesh must be one that `CGAL::untangle_simplex_soup()` accepts
-with its boundary fixed: no facet shared by more than two simplices, no
-two simplices with the same points, every boundary point fixed (a free
-boundary needs phantom elements built over whole boundary stars; give
-such a mesh to `CGAL::untangle_simplex_soup_distributed()`).  A part that
+The whole mesh must be one that `CGAL::untangle_simplex_soup()` accepts:
+no facet shared by more than two simplices, no two simplices with the
+same points.  Its boundary may be free: each process then protects the
+stars of its own points with the phantoms a serial run builds.  A part that
 breaks a requirement is refused on every process, with a message naming
 the process, the point or the simplex.
 

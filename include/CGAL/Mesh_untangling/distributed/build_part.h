@@ -13,6 +13,7 @@
 #include <CGAL/Mesh_untangling/distributed/Part_input.h>
 #include <CGAL/Mesh_untangling/distributed/Rank_part.h>
 #include <CGAL/Mesh_untangling/distributed/exchange.h>
+#include <CGAL/Mesh_untangling/distributed/part_phantoms.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 #include <CGAL/Mesh_untangling/internal/vertex_stars.h>
 
@@ -38,7 +39,12 @@ struct Whole_mesh
   std::size_t vertices = 0;   // global ids [0, vertices) are mesh vertices, the others phantoms
   Target_scaling scaling = Target_scaling::MATCH_MAP_VOLUME;   // (resolved)
   bool check_facets = false;  // the parts' stars are checked for non-manifold facets (the input was not)
-  bool fixed_boundary_only = false;   // a free boundary vertex is refused (no phantoms were made)
+  /// A mesh given in parts: a free boundary, if the parts' whole stars show
+  /// one, has the part built again with the targets given (regular ones if
+  /// none were) and, if `phantoms`, the phantoms of the process's own stars
+  /// (part_phantoms.h), as a serial run protects the whole mesh.
+  bool find_free_boundary = false;
+  bool phantoms = true;
 };
 
 /// What every process learns of the whole problem while building its part.
@@ -46,6 +52,7 @@ template <int d>
 struct Part_summary
 {
   std::size_t fixed = 0, degenerate_targets_replaced = 0;
+  Part_protection protection;   // (find_free_boundary: the phantoms built from the parts)
   double center[d] = {}, scale = 1;
   bool fixed_vertices_span_space = true;
 };
@@ -58,32 +65,13 @@ inline MU::Problem_reductions over_processes(MPI_Comm comm)
   return over;
 }
 
-/// The owner of every listed global id: the lowest process that lists it.
-/// Each id's home process (id modulo the number of processes) hears every
-/// process that lists it and answers.
+/// The owner of every listed global id: the lowest process that lists it
+/// (asked of the id's home process, the id modulo the number of processes).
 inline std::vector<int> lowest_listers(const std::vector<std::size_t>& ids, MPI_Comm comm)
 {
   int size = 1;
   MPI_Comm_size(comm, &size);
-  std::vector<std::vector<std::size_t>> asked(size);
-  for(std::size_t g : ids) asked[g % std::size_t(size)].push_back(g);
-  const auto heard = exchange_lists(asked, comm);
-  std::vector<std::pair<std::size_t, int>> listed;   // (id, lister): the lowest lister of an id first
-  for(int s = 0; s < size; ++s)
-    for(std::size_t g : heard[s]) listed.emplace_back(g, s);
-  std::sort(listed.begin(), listed.end());
-  std::vector<std::vector<int>> answers(size);
-  for(int s = 0; s < size; ++s)
-    for(std::size_t g : heard[s])
-      answers[s].push_back(std::lower_bound(listed.begin(), listed.end(), std::make_pair(g, -1))->second);
-  const auto replies = exchange_lists(answers, comm);
-  std::vector<int> owner(ids.size());
-  std::vector<std::size_t> next(size, 0);
-  for(std::size_t i = 0; i < ids.size(); ++i) {
-    const std::size_t home = ids[i] % std::size_t(size);
-    owner[i] = replies[home][next[home]++];
-  }
-  return owner;
+  return lowest_listers(ids, [size](std::size_t g) { return int(g % std::size_t(size)); }, comm);
 }
 
 template <int d>
@@ -262,28 +250,56 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
 
   // 5. The checks that need whole stars: each process those of its own vertices.
   std::string defect;
-  if(whole.check_facets || whole.fixed_boundary_only) {
+  if(whole.check_facets) {
     MU::Untangling_input<d> stars;
     stars.positions.resize(total);
     stars.elements = part.elements;
-    if(whole.check_facets)
-      try {
-        MU::validate_manifold_facets<d>(stars, MU::Input_names{&part.global_vertex, &part.global_element});
-      } catch(const std::invalid_argument& e) {
-        defect = e.what();
-      }
-    if(defect.empty() && whole.fixed_boundary_only) {
-      const std::vector<char> on_boundary = MU::boundary_vertices<d>(total, part.elements);
-      for(std::size_t v = 0; v < part.own_mesh_vertices && defect.empty(); ++v)
-        if(on_boundary[v] && !part.is_fixed[v])
-          defect = "vertex " + std::to_string(part.global_vertex[v]) +
-                   " is on the boundary and free: a mesh given in parts takes fixed boundaries only (a free "
-                   "boundary needs phantom elements, which untangle_simplex_soup_distributed() builds from the "
-                   "whole mesh on process 0)";
+    try {
+      MU::validate_manifold_facets<d>(stars, MU::Input_names{&part.global_vertex, &part.global_element});
+    } catch(const std::invalid_argument& e) {
+      defect = e.what();
     }
   }
   refusal = first_refusal(defect, comm);
   if(!refusal.empty()) return Rank_part<d>();
+
+  // 5b. A free boundary given in parts: the part again, protected (Whole_mesh::find_free_boundary).
+  if(whole.find_free_boundary && parts_have_free_boundary(part, comm)) {
+    double given = in.targets.empty() ? 0 : 1;
+    max_over(&given, 1, comm);
+    if(given > 0 || whole.phantoms) {
+      if(given == 0) in.targets = MU::default_targets<d>(in, over_processes(comm));
+      Whole_mesh again = whole;
+      again.find_free_boundary = again.check_facets = false;   // (checked)
+      again.scaling = Target_scaling::AS_GIVEN;
+      Part_protection protection;
+      if(whole.phantoms) {
+        using Packed_target = std::array<double, d * (d + 1)>;
+        std::vector<std::vector<Packed_target>> lent_targets(size);
+        for(int r = 0; r < size; ++r)
+          for(std::size_t k : lent_elements[r]) {
+            Packed_target t;
+            for(int i = 0; i <= d; ++i) std::copy(in.targets[k][i].data(), in.targets[k][i].data() + d, t.begin() + d * i);
+            lent_targets[r].push_back(t);
+          }
+        std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> targets(in.targets.begin(), in.targets.begin() + std::ptrdiff_t(mesh_m));
+        for(const auto& from : exchange_lists(lent_targets, comm))
+          for(const Packed_target& t : from) {
+            targets.emplace_back();
+            for(int i = 0; i <= d; ++i) std::copy(t.begin() + d * i, t.begin() + d * (i + 1), targets.back()[i].data());
+          }
+        // (the phantom vertices' ids follow the mesh's)
+        unsigned long last_id = 0;
+        for(std::size_t g : part.global_vertex) last_id = std::max<unsigned long>(last_id, g);
+        MPI_Allreduce(MPI_IN_PLACE, &last_id, 1, MPI_UNSIGNED_LONG, MPI_MAX, comm);
+        again.vertices = std::size_t(last_id) + 1;
+        protection = protect_part_input<d>(mine, part, targets, again.vertices, comm);
+      }
+      Rank_part<d> protected_part = build_part<d>(std::move(mine), again, comm, summary, refusal);
+      summary.protection = protection;
+      return protected_part;
+    }
+  }
 
   // 6. The part's share of the problem: its own elements, with the whole mesh's sums.
   MU::Untangling_input<d> share;

@@ -8,10 +8,12 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -45,6 +47,35 @@ std::vector<std::vector<T>> exchange_lists(const std::vector<std::vector<T>>& ou
     if(receive_count[r] > 0) std::memcpy(incoming[r].data(), received.data() + receive_at[r], std::size_t(receive_count[r]));
   }
   return incoming;
+}
+
+/// For each of `keys` (plain values with an order), the lowest process that
+/// lists it: every key is sent to its home process (`home(key)`, the same on
+/// every process), which hears all its listers and answers.
+template <class Key, class Home>
+std::vector<int> lowest_listers(const std::vector<Key>& keys, const Home& home, MPI_Comm comm)
+{
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  std::vector<std::vector<Key>> asked(size);
+  for(const Key& key : keys) asked[home(key)].push_back(key);
+  const auto heard = exchange_lists(asked, comm);
+  std::vector<std::pair<Key, int>> listed;   // (key, lister): the lowest lister of a key first
+  for(int s = 0; s < size; ++s)
+    for(const Key& key : heard[s]) listed.emplace_back(key, s);
+  std::sort(listed.begin(), listed.end());
+  std::vector<std::vector<int>> answers(size);
+  for(int s = 0; s < size; ++s)
+    for(const Key& key : heard[s])
+      answers[s].push_back(std::lower_bound(listed.begin(), listed.end(), std::make_pair(key, -1))->second);
+  const auto replies = exchange_lists(answers, comm);
+  std::vector<int> lowest(keys.size());
+  std::vector<std::size_t> next(size, 0);
+  for(std::size_t i = 0; i < keys.size(); ++i) {
+    const int h = home(keys[i]);
+    lowest[i] = replies[h][next[h]++];
+  }
+  return lowest;
 }
 
 /// The refusal of the lowest process that has one (empty if none), on every process.

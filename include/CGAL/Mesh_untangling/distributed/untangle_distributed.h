@@ -119,6 +119,11 @@ Untangling_result untangle_parts(MPI_Comm comm, Part_input<d>&& mine, const Whol
     return result;
   }
   const Rank_part<d>& part = out.part;
+  if(whole.find_free_boundary) {
+    result.number_of_phantom_elements = summary.protection.phantom_elements;
+    result.number_of_phantom_vertices = summary.protection.phantom_vertices;
+    result.incomplete_phantom_stars = summary.protection.incomplete_stars;
+  }
   result.number_of_fixed_vertices = summary.fixed;
   result.degenerate_targets_replaced = summary.degenerate_targets_replaced;
   settings.largest_epsilon = MU::largest_epsilon(d, settings.theta, summary.fixed_vertices_span_space);

@@ -46,22 +46,26 @@ struct Phantom_elements
 /// volume is the map's (signed, or absolute when that is nearly zero).  With
 /// them given explicitly the untangling is the same (AUTOMATIC scaling then
 /// keeps them as given on free-boundary problems); phantom targets need them
-/// to have a size to be measured against.
+/// to have a size to be measured against.  `over`: the sums of a
+/// distributed mesh's parts (each process gets its own elements' targets,
+/// all of them the same simplex).
 template <int d>
-std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> default_targets(const Untangling_input<d>& in)
+std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> default_targets(const Untangling_input<d>& in,
+                                                                              const Problem_reductions& over = {})
 {
-  const bool negative = map_volume_sign<d>(in) < 0;
+  const bool negative = map_volume_sign<d>(in, over) < 0;
   const std::size_t m = in.number_of_mesh_elements();
-  double signed_volume = 0, absolute_volume = 0;
+  double sums[3] = {0, 0, double(m)};   // signed volume, absolute volume, elements
   for(std::size_t k = 0; k < m; ++k) {
     std::array<Eigen::Matrix<double, d, 1>, d + 1> image;
     for(int i = 0; i <= d; ++i) image[i] = in.positions[in.elements[k][i]];
     const double v = simplex_volume<d>(image);
-    signed_volume += negative ? -v : v;
-    absolute_volume += std::abs(v);
+    sums[0] += negative ? -v : v;
+    sums[1] += std::abs(v);
   }
-  const double wanted = signed_volume > 1e-3 * absolute_volume ? signed_volume : absolute_volume;
-  const double factor = wanted > 0 && m > 0 ? std::pow(wanted / double(m), 1. / d) : 1.;
+  over.add_up(sums, 3);
+  const double wanted = sums[0] > 1e-3 * sums[1] ? sums[0] : sums[1];
+  const double factor = wanted > 0 && sums[2] > 0 ? std::pow(wanted / sums[2], 1. / d) : 1.;
   auto t = regular_simplex<d>();
   for(auto& p : t) p *= factor;
   if(negative) std::swap(t[0], t[1]);

@@ -81,6 +81,14 @@ struct Phantom_options_3
   /// vertex or edge whose boundary faces are all fixed); see "Fixed
   /// boundaries" above for why they are left alone by default
   bool protect_fixed_boundaries = false;
+  /// the vertices whose stars get phantoms (empty: all): the edge fans of
+  /// edges whose lower vertex is one, the boundary stars of the ones on the
+  /// boundary.  A process of a distributed run protects the stars it has
+  /// whole, its own vertices', numbered in the order of the whole mesh.
+  std::vector<char> centres;
+  /// +1 or -1: the side a tetrahedron flat in rest is turned to; 0: the
+  /// majority's among `tets` (a distributed run passes the whole mesh's)
+  int flat_orientation = 0;
 };
 
 struct Phantom_statistics_3
@@ -209,6 +217,7 @@ public:
 
 private:
   bool fixed(std::size_t v) const { return v < n_ && !is_fixed_.empty() && is_fixed_[v]; }
+  bool centre(std::size_t v) const { return options_.centres.empty() || options_.centres[v]; }
 
   // A tetrahedron negatively oriented in rest is reversed (as the core reverses
   // elements with a negative target); a flat one follows the majority.
@@ -221,6 +230,7 @@ private:
       volume[k] = orientation(points_[t[0]], points_[t[1]], points_[t[2]], points_[t[3]]);
       majority += volume[k] > 0 ? 1 : (volume[k] < 0 ? -1 : 0);
     }
+    if(options_.flat_orientation != 0) majority = options_.flat_orientation;
     for(std::size_t k = 0; k < tets_.size(); ++k)
       if(volume[k] < 0 || (volume[k] == 0 && majority < 0)) std::swap(tets_[k][0], tets_[k][1]);
   }
@@ -374,6 +384,7 @@ private:
       link.clear();
       for(last = first; last < entries.size() && entries[last].u == entries[first].u && entries[last].v == entries[first].v; ++last)
         link.emplace_back(entries[last].from, entries[last].to);
+      if(!centre(entries[first].u)) continue;
       bool closed = false;
       if(!order_link(link, outer, closed)) { ++stats_.non_manifold_edges; continue; }
       ++(closed ? stats_.interior_edges : stats_.boundary_edges);
@@ -520,6 +531,7 @@ private:
       link.clear();
       for(last = first; last < entries.size() && entries[last][0] == p; ++last)
         link.emplace_back(entries[last][1], entries[last][2]);
+      if(!centre(p)) continue;
       bool closed = false;
       if(!order_link(link, loop, closed) || !closed || loop.size() < 3) {
         ++stats_.non_manifold_boundary_vertices;
@@ -610,6 +622,9 @@ compute_phantom_tetrahedra(const std::vector<Eigen::Vector3d>& rest_positions,
                                 " rest positions");
   if(!is_fixed.empty() && is_fixed.size() != n)
     throw std::invalid_argument("fixed-vertex flags for " + std::to_string(is_fixed.size()) + " vertices, the mesh has " +
+                                std::to_string(n));
+  if(!options.centres.empty() && options.centres.size() != n)
+    throw std::invalid_argument("centre flags for " + std::to_string(options.centres.size()) + " vertices, the mesh has " +
                                 std::to_string(n));
   for(std::size_t v = 0; v < n; ++v)
     if(!rest_positions[v].allFinite() || !map_positions[v].allFinite())

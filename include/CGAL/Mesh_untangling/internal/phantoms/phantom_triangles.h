@@ -72,6 +72,9 @@ struct Phantom_options
   double min_closing_angle = phantom_pi / 12;
   /// targets below this mean ratio are degenerate (as in make_untangling_problem())
   double degenerate_quality = default_degenerate_quality;
+  /// the vertices whose stars get phantoms (empty: all): a process of a
+  /// distributed run protects the stars it has whole, its own vertices'
+  std::vector<char> centres;
 };
 
 struct Phantom_statistics
@@ -177,6 +180,9 @@ compute_phantom_triangles(std::size_t number_of_vertices,
   if(!is_fixed.empty() && is_fixed.size() != number_of_vertices)
     throw std::invalid_argument("fixed-vertex flags for " + std::to_string(is_fixed.size()) + " vertices, the mesh has " +
                                 std::to_string(number_of_vertices));
+  if(!options.centres.empty() && options.centres.size() != number_of_vertices)
+    throw std::invalid_argument("centre flags for " + std::to_string(options.centres.size()) + " vertices, the mesh has " +
+                                std::to_string(number_of_vertices));
   Phantom_statistics stats;
   std::vector<Phantom_triangle> phantoms;
   Star_builder builder(number_of_vertices, triangles, targets, options.degenerate_quality);
@@ -192,6 +198,7 @@ compute_phantom_triangles(std::size_t number_of_vertices,
   };
 
   for(std::size_t v = 0; v < number_of_vertices; ++v) {
+    if(!options.centres.empty() && !options.centres[v]) continue;
     const Star_type kind = builder.build(v, star);
     if(kind == Star_type::ISOLATED) continue;
     if(kind == Star_type::NON_MANIFOLD) { ++stats.non_manifold_stars; continue; }
