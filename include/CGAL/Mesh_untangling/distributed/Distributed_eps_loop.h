@@ -83,8 +83,7 @@ public:
     MU::Chunked_LBFGS curvature([this](double part) { return sum(part); });
     Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(P_.x.data(), Eigen::Index(unknowns_));
     Eigen::VectorXd gradient(x.size());
-    const bool first_valid = settings_.stopping_rule == Stopping_rule::FIRST_VALID_MAP;
-    if(first_valid && summary.min_det > 0) {   // (valid already: no step to take)
+    if(MU::loop_ends_before_a_step(settings_.stopping_rule, summary.min_det)) {
       out.energy = evaluate(x, eps, gradient);
       out.epsilon = eps;
       out.min_det_after = summary.min_det;
@@ -106,7 +105,7 @@ public:
                                  inner.iterations, inner.evaluations, seconds(), 0};
       const bool go_on = rank_ != 0 || !settings_.callback || settings_.callback(info);
       if(!agreed_on_process_0(go_on)) { out.stopped = true; break; }
-      if(first_valid ? summary.min_det > 0 : MU::energy_settled(E, E_prev, summary.min_det)) break;
+      if(MU::loop_ends(settings_.stopping_rule, E, E_prev, summary.min_det)) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(summary.non_positive > 0 && ++since_best >= stall_patience) break;
       const double next_eps =

@@ -98,10 +98,6 @@ struct Eps_loop_outcome
   double energy = 0, epsilon = 0;
 };
 
-/// Where an eps loop may stop: at a settled energy, or (a stage that only
-/// hands a valid map to the next one) as soon as every element is positive.
-enum class Eps_loop_goal { SETTLED_ENERGY, VALID_MAP };
-
 /// The eps below which free seam translations move (see Eps_loop::run).
 constexpr double free_parameters_epsilon = 1e-3;
 
@@ -136,12 +132,9 @@ public:
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   bool out_of_time() const { return internal::out_of_time(options_); }
 
-  /// Where a stage whose map is the run's result stops (Stopping_rule).
-  Eps_loop_goal final_goal() const
-  {
-    return options_.stopping_rule == Stopping_rule::FIRST_VALID_MAP ? Eps_loop_goal::VALID_MAP
-                                                                    : Eps_loop_goal::SETTLED_ENERGY;
-  }
+  /// Where a stage whose map is the run's result stops (a stage that only
+  /// hands a valid map to the next one stops at its first: FIRST_VALID_MAP).
+  Stopping_rule stopping_rule() const { return options_.stopping_rule; }
 
   std::size_t eps_steps_left() const
   { return options_.max_outer_iterations - (std::min)(steps_, options_.max_outer_iterations); }
@@ -181,14 +174,14 @@ public:
     const double flops = predicted_flops(P);
     solver_ = Solver::LBFGS;
     trial_evaluations_left_ = lbfgs_trial_evaluations;
-    out = run(P, 0, Stall_test::COUNT_STANDS, final_goal());
+    out = run(P, 0, Stall_test::COUNT_STANDS, stopping_rule());
     trial_evaluations_left_ = unlimited;
     const auto ends_valid = [&] {
       return !out.stalled && !out.numerical_failure && determinant_summary(P, P.x.data()).non_positive == 0 &&
              locally_invertible();
     };
     const bool went_on = out.trial_budget_spent && ends_valid();
-    if(went_on) out = run(P, 0, Stall_test::COUNT_STANDS, final_goal());
+    if(went_on) out = run(P, 0, Stall_test::COUNT_STANDS, stopping_rule());
     if(!out.stopped && ends_valid()) {
       result_.solver = to_string(Solver::LBFGS) + " (tried first: a Newton factorization would cost about " +
                        std::to_string(static_cast<long long>(flops / P.elements.size())) + " flops per element" +
@@ -201,7 +194,7 @@ public:
   }
 
   /// Partial minimizations of F(., eps) from P.x until the energy settles
-  /// with every element positive, or until `stall` gives up.  With Eps_loop_goal::VALID_MAP, stops at the
+  /// with every element positive, or until `stall` gives up.  With Stopping_rule::FIRST_VALID_MAP, stops at the
   /// first valid map instead of polishing it toward targets that the next
   /// stage replaces (the regular targets of stage 1: 7 to 14 % of the
   /// evaluations of a Newton run on the CuboidBlocks, up to 37 % of an
@@ -213,7 +206,7 @@ public:
   /// from a valid map, where eps is tiny and a converged solve is the end)
   /// or a few steps.
   Eps_loop_outcome run(Untangling_problem<d>& P, int stage, Stall_test stall,
-                       Eps_loop_goal goal = Eps_loop_goal::SETTLED_ENERGY)
+                       Stopping_rule rule = Stopping_rule::SETTLED_ENERGY)
   {
     Eps_loop_outcome out;
     Newton_solver<d>* newton = newton_solver(P);
@@ -223,7 +216,7 @@ public:
     const double eps_cap = largest_epsilon(P);
     double eps = newton && summary.min_det > 0 ? tiny_epsilon : std::min(initial_epsilon(summary.min_det), eps_cap);
     const std::size_t initial_count = summary.non_positive;
-    if(goal == Eps_loop_goal::VALID_MAP && summary.min_det > 0) {   // (valid already: no step to take)
+    if(loop_ends_before_a_step(rule, summary.min_det)) {
       out.energy = energy<d>(P, P.x.data(), eps, theta_);
       out.epsilon = eps;
       return out;
@@ -270,9 +263,9 @@ public:
       // test on the energy change would stop it after a loose tangled-phase solve).
       // (held translations, see above: not settled before they have moved)
       const bool settled = (!P.links.has_parents() || !P.links.hold_parameters) &&
-                           (goal == Eps_loop_goal::VALID_MAP ? summary.min_det > 0
-                            : newton ? valid && inner.converged && summary.min_det > 0
-                                     : energy_settled(E, E_prev, summary.min_det));
+                           (newton && rule == Stopping_rule::SETTLED_ENERGY
+                              ? valid && inner.converged && summary.min_det > 0
+                              : loop_ends(rule, E, E_prev, summary.min_det));
       if(settled) break;
       if(summary.non_positive < best) { best = summary.non_positive; since_best = 0; }
       else if(patience > 0 && summary.non_positive > 0 && ++since_best >= patience) { out.stalled = true; break; }

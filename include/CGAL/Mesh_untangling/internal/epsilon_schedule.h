@@ -8,6 +8,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_EPSILON_SCHEDULE_H
 
 #include <CGAL/Mesh_untangling/internal/simplex_energy.h>
+#include <CGAL/Mesh_untangling/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,6 +91,20 @@ private:
 inline bool energy_settled(double E, double E_prev, double min_det)
 {
   return min_det > 0 && std::abs(E_prev - E) <= 1e-5 * std::abs(E);
+}
+
+/// Whether the published loop stops after a step under `rule`: at a settled
+/// energy (energy_settled), or at the first map with every element positive.
+inline bool loop_ends(Stopping_rule rule, double E, double E_prev, double min_det)
+{
+  return rule == Stopping_rule::FIRST_VALID_MAP ? min_det > 0 : energy_settled(E, E_prev, min_det);
+}
+
+/// Whether a loop under `rule` takes no step at all from a map whose
+/// smallest det J is `min_det`: a valid map is where FIRST_VALID_MAP ends.
+inline bool loop_ends_before_a_step(Stopping_rule rule, double min_det)
+{
+  return rule == Stopping_rule::FIRST_VALID_MAP && min_det > 0;
 }
 
 } // namespace internal

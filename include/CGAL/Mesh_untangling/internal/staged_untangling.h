@@ -141,7 +141,7 @@ Eps_loop_outcome run_stage_0(Untangling_problem<d>& P, Untangling_input<d>& in, 
                   how == Stage_0::UNTIL_SETTLED ? Stall_test::NONE
                   : regular_targets_follow      ? Stall_test::COUNT_NOT_HALVED
                                                 : Stall_test::COUNT_STANDS,
-                  loop.final_goal());
+                  loop.stopping_rule());
 }
 
 /// Tries `repair` on the map of R, stalled; a repaired map replaces R's.
@@ -173,8 +173,8 @@ Eps_loop_outcome run_stages_1_and_2(Untangling_problem<d>& P, const Untangling_i
 {
   Untangling_problem<d> R = targets_given ? with_regular_targets(in, P) : P;
   // with given targets, stage 2 takes over from the first valid map
-  const Eps_loop_goal goal = targets_given ? Eps_loop_goal::VALID_MAP : loop.final_goal();
-  if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_FALLS_AFTER_FIRST_STEP, goal);
+  const Stopping_rule rule = targets_given ? Stopping_rule::FIRST_VALID_MAP : loop.stopping_rule();
+  if(targets_given) outcome = loop.run(R, 1, Stall_test::COUNT_FALLS_AFTER_FIRST_STEP, rule);
   // Stalled with a few inverted elements whose free vertices must move
   // together: a local repair untangles them where a shake tangles the
   // whole map again (benchmark/Mesh_untangling/README.md, "the shakes").
@@ -197,12 +197,12 @@ Eps_loop_outcome run_stages_1_and_2(Untangling_problem<d>& P, const Untangling_i
     }
     if(restart == max_restarts) break;
     shake_non_positive_elements(R, random);
-    outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, goal);
+    outcome = loop.run(R, 1, Stall_test::COUNT_STANDS, rule);
   }
   const bool untangled = determinant_summary(R, R.x.data()).non_positive == 0;
   P.x = R.x;
   if(targets_given && untangled && !outcome.stopped && !loop.out_of_time() &&
-     loop.final_goal() == Eps_loop_goal::SETTLED_ENERGY) {
+     loop.stopping_rule() == Stopping_rule::SETTLED_ENERGY) {
     outcome = loop.run(P, 2, Stall_test::NONE);
     if(determinant_summary(P, P.x.data()).non_positive > 0) P.x = R.x;   // never trade validity for shape
   }
