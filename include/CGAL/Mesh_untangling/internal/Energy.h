@@ -156,9 +156,8 @@ void add_element_group(const Untangling_problem<d>& P, const double* x, const Si
     }
 }
 
-/// F(X, eps) = sum_k w_k f_eps(J_k) and its gradient (zero on fixed vertices;
-/// with linked vertices, projected on the directions that keep the links; for
-/// a sliding vertex, on its tangent directions).
+/// F(X, eps) = sum_k w_k f_eps(J_k) and its gradient, projected on the
+/// directions the unknowns move the vertices in (Unknowns::project).
 /// Each element adds its gradient straight into its free vertices, colour by
 /// colour (coloured_chunk_sum): no per-element buffer, no serial gather.
 /// The same bits as summing w_k f(J_k) element by element with Simplex_energy.
@@ -180,14 +179,7 @@ double energy(const Untangling_problem<d>& P, const double* x, double eps, doubl
     if(chunk_non_positive > 0) non_positive_elements += chunk_non_positive;
     return sum;
   });
-  if(gradient != nullptr)   // (cheaper once here than a test per vertex of every element)
-    for_each_chunk(P.number_of_vertices, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v)
-        if(P.is_fixed[v])
-          for(int row = 0; row < d; ++row) gradient[d * v + row] = 0;
-    });
-  if(gradient != nullptr && !P.links.empty()) project_gradient_on_links<d>(P.links, gradient);
-  if(gradient != nullptr && !P.sliding.empty()) project_gradient_on_tangents<d>(P.sliding, gradient);
+  if(gradient != nullptr) P.unknowns().project(gradient);   // (cheaper once here than a test per vertex of every element)
   if(non_positive != nullptr) *non_positive = non_positive_elements;
   return F;
 }

@@ -237,7 +237,7 @@ public:
       // less than its target's shape: on torus 24 released at eps 0.2 the map
       // collapsed to 710 inverted triangles).  They wait for a valid map and
       // a small eps, where shrinking costs size energy instead.
-      if(P.links.has_parents()) P.links.hold_parameters = !(valid && eps <= free_parameters_epsilon);
+      const bool held = P.hold_late_unknowns(valid && eps <= free_parameters_epsilon);
       const Inner_statistics inner =
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? polish_tolerance_ : 1e-4)
                : lbfgs_solver(curvature).minimize(P, eps, theta_, inner_iterations(valid),
@@ -262,7 +262,7 @@ public:
       // Newton's end is a converged solve from a valid map (the published
       // test on the energy change would stop it after a loose tangled-phase solve).
       // (held translations, see above: not settled before they have moved)
-      const bool settled = (!P.links.has_parents() || !P.links.hold_parameters) &&
+      const bool settled = !held &&
                            (newton && rule == Stopping_rule::SETTLED_ENERGY
                               ? valid && inner.converged && summary.min_det > 0
                               : loop_ends(rule, E, E_prev, summary.min_det));
@@ -283,7 +283,7 @@ public:
       // Held translations move at a small eps, not at the tiny one L-BFGS
       // jumps to from a valid map (where its line search barely moves:
       // 2 iterations on torus 24): eps comes down to a tenth of that bound.
-      if(P.links.has_parents() && P.links.hold_parameters && summary.min_det > 0)
+      if(held && summary.min_det > 0)
         next_eps = std::max(next_eps, std::min(eps, free_parameters_epsilon) / 10);
       // A step that moved nothing, at an eps that stays, is followed by the
       // same: at the eps floor, with phantoms that no valid map of the mesh

@@ -4,6 +4,7 @@
 #define CGAL_MESH_UNTANGLING_INTERNAL_UNTANGLING_PROBLEM_H
 
 #include <CGAL/Mesh_untangling/parameters.h>
+#include <CGAL/Mesh_untangling/internal/Unknowns.h>
 #include <CGAL/Mesh_untangling/internal/Vertex_links.h>
 #include <CGAL/Mesh_untangling/internal/sliding/Sliding_vertices.h>
 #include <CGAL/Mesh_untangling/internal/vertex_stars.h>
@@ -178,7 +179,7 @@ struct Untangling_problem
   std::size_t constant_elements = 0;                // all vertices fixed: left out of the energy
   // Linked vertices (seams) in normalized coordinates; empty: none.  A
   // linked vertex is free or fixed with its representative, and the
-  // solvers' unknowns are the representatives (Newton_solver's Free_numbering).
+  // solvers' unknowns are the representatives (Unknowns.h).
   Vertex_links<d> links;
   // Sliding vertices (their projectors do not change with the normalization).
   Sliding_vertices<d> sliding;
@@ -187,6 +188,17 @@ struct Untangling_problem
   double scale = 1;
 
   Vector point(std::size_t v) const { return Eigen::Map<const Vector>(&x[d * v]); }
+
+  /// The change of variables between the positions and the solvers' unknowns.
+  Unknowns<d> unknowns() const { return Unknowns<d>(is_fixed, links, sliding); }
+  /// Holds the unknowns that must wait for a valid map at a small eps (the
+  /// seams' free translations: Vertex_links.h) unless `release`; whether
+  /// some are held.
+  bool hold_late_unknowns(bool release)
+  {
+    links.hold_parameters = links.has_parents() && !release;
+    return links.hold_parameters;
+  }
 
   /// Whether the solvers move sliding vertices back onto curved targets.
   bool retracts() const { return sliding.retracts(); }

@@ -159,27 +159,22 @@ public:
 };
 #endif
 
-/// The free vertices numbered 0, 1, ... in vertex order (-1 for a fixed
-/// vertex); a linked vertex (Vertex_links.h) takes its representative's
-/// number: the representatives are the unknowns.
+/// The unknowns numbered 0, 1, ... in vertex order, -1 for a fixed vertex;
+/// a vertex that another's unknown moves (a seam's wedge, Unknowns.h) takes
+/// that one's number.
 struct Free_numbering
 {
   std::vector<int> index;
   int count = 0;
 
-  explicit Free_numbering(const std::vector<char>& is_fixed) : index(is_fixed.size(), -1)
-  {
-    for(std::size_t v = 0; v < is_fixed.size(); ++v)
-      if(!is_fixed[v]) index[v] = count++;
-  }
-
   template <int d>
-  Free_numbering(const std::vector<char>& is_fixed, const Vertex_links<d>& links) : index(is_fixed.size(), -1)
+  explicit Free_numbering(const Unknowns<d>& unknowns) : index(unknowns.number_of_vertices(), -1)
   {
-    for(std::size_t v = 0; v < is_fixed.size(); ++v)
-      if(!is_fixed[v] && !links.is_linked(v)) index[v] = count++;
-    for(std::size_t v = 0; v < is_fixed.size(); ++v)
-      if(links.is_linked(v)) index[v] = index[links.representative[v]];
+    const std::size_t n = unknowns.number_of_vertices();
+    for(std::size_t v = 0; v < n; ++v)
+      if(unknowns.owns_unknown(v)) index[v] = count++;
+    for(std::size_t v = 0; v < n; ++v)
+      if(unknowns.owner(v) != v) index[v] = index[unknowns.owner(v)];
   }
 };
 
@@ -190,21 +185,19 @@ template <int d>
 std::vector<std::vector<int>> lower_vertex_graph(const Untangling_problem<d>& P, const Free_numbering& free)
 {
   std::vector<std::vector<int>> rows(free.count);
+  const Unknowns<d> unknowns = P.unknowns();
   const Vertex_stars stars = build_vertex_stars(P.number_of_vertices, P.elements);
   for_each_vertex_chunk(P.number_of_vertices, [&](std::size_t, std::size_t first, std::size_t last) {
     for(std::size_t v = first; v < last; ++v) {
       const int j = free.index[v];
-      if(j < 0 || P.links.is_linked(v)) continue;
+      if(j < 0 || !unknowns.owns_unknown(v)) continue;
       std::vector<int>& r = rows[j];
       r.push_back(j);
-      const auto add_star = [&](std::size_t u) {
+      unknowns.for_each_vertex_moved_by(v, [&](std::size_t u) {   // (a seam's representative: its wedges' stars too)
         for(std::size_t s = stars.begin(u); s < stars.end(u); ++s)
           for(std::size_t a : P.elements[stars.elements[s]])
             if(free.index[a] > j) r.push_back(free.index[a]);
-      };
-      if(P.links.empty()) add_star(v);
-      else   // the representative's row holds the stars of its whole group
-        for(std::size_t i = P.links.member_start[v]; i < P.links.member_start[v + 1]; ++i) add_star(P.links.members[i]);
+      });
       std::sort(r.begin(), r.end());
       r.erase(std::unique(r.begin(), r.end()), r.end());
     }
@@ -222,7 +215,7 @@ template <int d>
 class Hessian_pattern
 {
 public:
-  explicit Hessian_pattern(const Untangling_problem<d>& P) : free_(P.is_fixed, P.links)
+  explicit Hessian_pattern(const Untangling_problem<d>& P) : free_(P.unknowns())
   {
     const int free_count = free_.count;
     // every diagonal block is stored, even that of a free vertex in no
@@ -341,7 +334,7 @@ template <int d>
 double predicted_factorization_flops(const Untangling_problem<d>& P)
 {
 #ifdef CGAL_MESH_UNTANGLING_USE_CHOLMOD
-  const Free_numbering free(P.is_fixed, P.links);
+  const Free_numbering free(P.unknowns());
   if(free.count == 0) return 0;
   const std::vector<std::vector<int>> rows = lower_vertex_graph(P, free);
   // the compressed columns written directly: each column's rows are sorted already
@@ -679,15 +672,11 @@ public:
   {
     vertex_gradient_.resize(P.x.size());
     const double F = energy<d>(P, x, eps, theta, vertex_gradient_.data(), non_positive);
+    const Unknowns<d> unknowns = P.unknowns();
     for_each_chunk(P.number_of_vertices, vector_chunk_size, [&](std::size_t, std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v) {
-        const int f = pattern_.free_index(v);
-        if(f < 0 || P.links.is_linked(v)) continue;
-        if(P.links.empty())
-          for(int c = 0; c < d; ++c) g[d * f + c] = vertex_gradient_[d * v + c];
-        else   // the derivative along the representative: its group's, folded
-          g.template segment<d>(d * f) = folded_gradient<d>(P.links, v, vertex_gradient_.data());
-      }
+      for(std::size_t v = begin; v < end; ++v)
+        if(unknowns.owns_unknown(v))
+          g.template segment<d>(d * pattern_.free_index(v)) = unknowns.gradient_of_unknown(v, vertex_gradient_.data());
     });
     return F;
   }
@@ -783,23 +772,16 @@ private:
     bool derivatives_at_trial = false;   // Step_workspace::g_trial holds the gradient at the trial point
   };
 
-  /// The step direction of the free unknowns, per vertex (zero on fixed
-  /// ones; a linked vertex turns its representative's: the step keeps the
-  /// links; a sliding one's is tangent).
+  /// The step direction of the free unknowns, per vertex: A dy
+  /// (Unknowns::to_vertex_step), zero on fixed vertices.
   void scatter_to_vertices(const Untangling_problem<d>& P, const Eigen::VectorXd& direction,
                            std::vector<double>& vertex_direction) const
   {
+    const Unknowns<d> unknowns = P.unknowns();
     for(std::size_t v = 0; v < P.number_of_vertices; ++v) {
       const int f = pattern_.free_index(v);
       for(int c = 0; c < d; ++c) vertex_direction[d * v + c] = f >= 0 ? direction[d * f + c] : 0.;
-      if(f >= 0 && P.links.is_linked(v)) {
-        Eigen::Map<Eigen::Matrix<double, d, 1>> step(&vertex_direction[d * v]);
-        step = quarter_turns(P.links.turns[v], Eigen::Matrix<double, d, 1>(step));
-      }
-      if(f >= 0 && P.sliding.slides(v)) {   // (the solve's rounding off the tangent too)
-        Eigen::Map<Eigen::Matrix<double, d, 1>> step(&vertex_direction[d * v]);
-        step = P.sliding.projector(v) * Eigen::Matrix<double, d, 1>(step);
-      }
+      if(f >= 0) unknowns.to_vertex_step(v, &vertex_direction[d * v]);
     }
   }
 
@@ -974,11 +956,11 @@ private:
   }
 
   /// Adds the packed lower triangle of an element's vertex Hessian (see
-  /// update_hessian) to H, block by block; the block of linked vertices
-  /// a, b goes to their representatives as Q_a^T B Q_b, that of sliding
-  /// ones as T_a B T_b.
+  /// update_hessian) to H, block by block, each pulled back to the
+  /// unknowns as A_a^T B A_b (Unknowns::pull_back_block).
   void add_element_hessian(const Untangling_problem<d>& P, std::size_t k, const Packed_hessian& lower)
   {
+    const Unknowns<d> unknowns = P.unknowns();
     auto entry = [&lower](int row, int col) { return lower[packed_index(row, col)]; };
     Eigen::Matrix<double, d, d> block;
     for(int a = 0; a <= d; ++a)
@@ -986,18 +968,7 @@ private:
         for(int c = 0; c < d; ++c)
           for(int r = 0; r < d; ++r)   // (a diagonal block mirrors its lower triangle)
             block(r, c) = a > b || r >= c ? entry(d * a + r, d * b + c) : entry(d * a + c, d * b + r);
-        if(!P.links.empty()) {
-          const int turns_a = P.links.turns[P.elements[k][a]], turns_b = P.links.turns[P.elements[k][b]];
-          for(int c = 0; c < d; ++c)
-            block.col(c) = quarter_turns(-turns_a, Eigen::Matrix<double, d, 1>(block.col(c)));
-          for(int r = 0; r < d; ++r)   // (B Q_b)^T = Q_b^T B^T
-            block.row(r) = quarter_turns(-turns_b, Eigen::Matrix<double, d, 1>(block.row(r).transpose())).transpose();
-        }
-        if(!P.sliding.empty()) {
-          const std::size_t u = P.elements[k][a], v = P.elements[k][b];
-          if(P.sliding.slides(u)) block = P.sliding.projector(u) * block;
-          if(P.sliding.slides(v)) block = block * P.sliding.projector(v);
-        }
+        unknowns.pull_back_block(P.elements[k][a], P.elements[k][b], block);
         pattern_.add(k, a, b, block);
       }
   }
