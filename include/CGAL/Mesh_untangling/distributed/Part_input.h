@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <numeric>
 #include <stdexcept>
@@ -69,13 +70,31 @@ std::string part_input_refusal(const Part_input<d>& p)
   return points.empty() ? repeated_global_id(p.global_element, d == 2 ? "triangles" : "tetrahedra") : points;
 }
 
+/// Appends the d (d + 1) coordinates of target `t` to `flat`, as the parts'
+/// files and messages carry targets.
+template <int d>
+void append_flat_target(const std::array<Eigen::Matrix<double, d, 1>, d + 1>& t, std::vector<double>& flat)
+{
+  for(const auto& x : t) flat.insert(flat.end(), x.data(), x.data() + d);
+}
+
+/// Appends to `targets` the targets that `flat` carries (append_flat_target).
+template <int d>
+void append_targets(const std::vector<double>& flat, std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets)
+{
+  for(std::size_t at = 0; at + d * (d + 1) <= flat.size(); at += d * (d + 1)) {
+    targets.emplace_back();
+    for(int i = 0; i <= d; ++i)
+      for(int c = 0; c < d; ++c) targets.back()[i][c] = flat[at + d * i + c];
+  }
+}
+
 template <int d>
 void write_part_input(const Part_input<d>& p, Byte_buffer& b)
 {
   std::vector<double> positions, targets;
   for(const auto& x : p.in.positions) positions.insert(positions.end(), x.data(), x.data() + d);
-  for(const auto& t : p.in.targets)
-    for(const auto& x : t) targets.insert(targets.end(), x.data(), x.data() + d);
+  for(const auto& t : p.in.targets) append_flat_target<d>(t, targets);
   b.write(positions);
   b.write(p.in.elements);
   b.write(targets);
@@ -103,10 +122,7 @@ Part_input<d> read_part_input(Byte_buffer& b)
   p.in.positions.resize(positions.size() / d);
   for(std::size_t v = 0; v < p.in.positions.size(); ++v)
     for(int c = 0; c < d; ++c) p.in.positions[v][c] = positions[d * v + c];
-  p.in.targets.resize(targets.size() / (d * (d + 1)));
-  for(std::size_t k = 0; k < p.in.targets.size(); ++k)
-    for(int i = 0; i <= d; ++i)
-      for(int c = 0; c < d; ++c) p.in.targets[k][i][c] = targets[d * ((d + 1) * k + i) + c];
+  append_targets<d>(targets, p.in.targets);
   p.in.is_fixed.assign(fixed.begin(), fixed.end());
   return p;
 }

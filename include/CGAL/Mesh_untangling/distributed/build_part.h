@@ -274,26 +274,9 @@ Rank_part<d> build_part(Part_input<d>&& mine, const Whole_mesh& whole, MPI_Comm 
       again.scaling = Target_scaling::AS_GIVEN;
       Part_protection protection;
       if(whole.phantoms) {
-        using Packed_target = std::array<double, d * (d + 1)>;
-        std::vector<std::vector<Packed_target>> lent_targets(size);
-        for(int r = 0; r < size; ++r)
-          for(std::size_t k : lent_elements[r]) {
-            Packed_target t;
-            for(int i = 0; i <= d; ++i) std::copy(in.targets[k][i].data(), in.targets[k][i].data() + d, t.begin() + d * i);
-            lent_targets[r].push_back(t);
-          }
-        std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> targets(in.targets.begin(), in.targets.begin() + std::ptrdiff_t(mesh_m));
-        for(const auto& from : exchange_lists(lent_targets, comm))
-          for(const Packed_target& t : from) {
-            targets.emplace_back();
-            for(int i = 0; i <= d; ++i) std::copy(t.begin() + d * i, t.begin() + d * (i + 1), targets.back()[i].data());
-          }
-        // (the phantom vertices' ids follow the mesh's)
-        unsigned long last_id = 0;
-        for(std::size_t g : part.global_vertex) last_id = std::max<unsigned long>(last_id, g);
-        MPI_Allreduce(MPI_IN_PLACE, &last_id, 1, MPI_UNSIGNED_LONG, MPI_MAX, comm);
-        again.vertices = std::size_t(last_id) + 1;
-        protection = protect_part_input<d>(mine, part, targets, again.vertices, comm);
+        again.vertices = first_free_global_id<d>(part, comm);   // (the phantom vertices' ids follow the mesh's)
+        protection = protect_part_input<d>(mine, part, part_targets<d>(in.targets, mesh_m, lent_elements, comm),
+                                           again.vertices, comm);
       }
       Rank_part<d> protected_part = build_part<d>(std::move(mine), again, comm, summary, refusal);
       summary.protection = protection;

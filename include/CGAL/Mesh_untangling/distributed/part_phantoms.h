@@ -141,6 +141,34 @@ inline MU::Phantom_elements<3> own_star_phantoms(const Ordered_part<3>& ordered,
   return phantoms;
 }
 
+/// The targets of the elements of `part`: the first `own` of `targets`
+/// (the process's own elements'), then those its neighbours lend, in the
+/// order of their elements in `part` (`lent`: per process, which own
+/// elements it was sent, in the order sent).
+template <int d>
+std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>
+part_targets(const std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>>& targets, std::size_t own,
+             const std::vector<std::vector<std::size_t>>& lent, MPI_Comm comm)
+{
+  std::vector<std::vector<double>> outgoing(lent.size());
+  for(std::size_t r = 0; r < lent.size(); ++r)
+    for(std::size_t k : lent[r]) append_flat_target<d>(targets[k], outgoing[r]);
+  std::vector<std::array<Eigen::Matrix<double, d, 1>, d + 1>> all(targets.begin(), targets.begin() + std::ptrdiff_t(own));
+  for(const std::vector<double>& from : exchange_lists(outgoing, comm)) append_targets<d>(from, all);
+  return all;
+}
+
+/// The first global id after every process's vertices: where the phantom
+/// vertices' ids start.
+template <int d>
+std::size_t first_free_global_id(const Rank_part<d>& part, MPI_Comm comm)
+{
+  unsigned long last_id = 0;
+  for(std::size_t g : part.global_vertex) last_id = std::max<unsigned long>(last_id, g);
+  MPI_Allreduce(MPI_IN_PLACE, &last_id, 1, MPI_UNSIGNED_LONG, MPI_MAX, comm);
+  return std::size_t(last_id) + 1;
+}
+
 /// Appends to `mine` the phantoms of its process's own stars, as own
 /// elements (`part`: mine's stars made whole; `targets`: one per element of
 /// `part`; mine's own targets must be given).  The phantom vertices take the
