@@ -75,7 +75,7 @@ fi
 PACKAGES=(build-essential cmake clang libclang-rt-dev libcgal-dev libeigen3-dev libboost-dev libtbb-dev libtet1.5-dev
           libsuitesparse-dev libopenblas0-serial liblbfgspp-dev libcli11-dev nlohmann-json3-dev libgmp-dev
           libmpfr-dev zlib1g-dev)
-# The Python module (python/, built for /usr/bin/python3): pybind11 and
+# The Python module (front_ends/python/, built for /usr/bin/python3): pybind11 and
 # numpy; meshio for the example that reads and writes other formats.
 if [ "$WITH_PYTHON" = 1 ]; then
   PACKAGES+=(python3-dev python3-numpy pybind11-dev python3-meshio)

@@ -80,7 +80,7 @@ int main(int argc, char** argv)
   surface.rest_dimension = 3;
   for(const std::string name : {".off", ".mesh", ".vtk", ".obj", ".input", "-surface.obj"}) {
     const std::string path = dir + "/benchmark_readers" + name;
-    const std::string ext = IO::internal::lowercase_extension(path);
+    const std::string ext = IO::lowercase_extension(path);
     IO::Mesh_file out = name == "-surface.obj" ? surface : ext == ".obj" || ext == ".input" ? obj : mesh;
     if(ext != ".obj" && ext != ".input") { out.rest.clear(); out.rest_dimension = 0; }
     IO::write_mesh_file(path, out);

@@ -14,8 +14,8 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/Output_files.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Output_files.h>
 #include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 
@@ -48,7 +48,7 @@ namespace IO = CGAL::Mesh_untangling::IO;
 using IO::Mesh_file;
 using IO::Read_error;
 using IO::Write_error;
-using IO::internal::Output_files;
+using IO::Output_files;
 
 namespace {
 
@@ -231,10 +231,10 @@ void check_signal_removes_temporaries(int signal_number)
   const std::string kept = write_text("kept.off", "old");
   const pid_t child = ::fork();
   if(child == 0) {
-    IO::internal::remove_temporaries_on_interrupt();
+    IO::remove_temporaries_on_interrupt();
     Output_files files;
     IO::write_OFF(files.add(kept), triangle());
-    IO::internal::Atomic_output_file report(temp_path("report.json"));
+    IO::Atomic_output_file report(temp_path("report.json"));
     report.stream() << "{" << std::flush;
     ::raise(signal_number);
     ::_exit(0);   // not reached

@@ -76,7 +76,7 @@ Case_spec pair_case(const std::string& rest, const std::string& init)
 
 Case_spec file_case(const std::string& path)
 {
-  if(MU::IO::internal::lowercase_extension(path) != ".input")
+  if(MU::IO::lowercase_extension(path) != ".input")
     throw Case_error("'" + path + "': a single file must be a Du et al. .input file "
                       "(for a rest and a map in two files, give REST:INIT)");
   Case_spec c;

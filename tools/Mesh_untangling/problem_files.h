@@ -42,7 +42,7 @@ inline std::string shell_word(const std::string& path)
 /// Returns the untangle_mesh arguments that read them back.
 inline std::string write_problem(const std::string& output, const IO::Mesh_file& mesh)
 {
-  const std::string extension = IO::internal::lowercase_extension(output);
+  const std::string extension = IO::lowercase_extension(output);
   if(extension == ".input") {
     IO::write_mesh_file(output, mesh);
     return "";

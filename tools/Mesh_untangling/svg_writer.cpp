@@ -3,7 +3,7 @@
 #include "svg_writer.h"
 
 #include <CGAL/Mesh_untangling/Element_figures.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/global_invertibility.h>
 #include <CGAL/Mesh_untangling/invertibility.h>
 
@@ -346,7 +346,7 @@ void overwound_vertices(std::ostream& out, const Svg_map& map, const Frame& fram
 Svg_counts write_svg(const std::string& path, const Svg_map& map)
 {
   check(map);   // before the file is created
-  CGAL::Mesh_untangling::IO::internal::Atomic_output_file file(path);
+  CGAL::Mesh_untangling::IO::Atomic_output_file file(path);
   const Svg_counts counts = write_svg(file.stream(), map);
   file.commit();
   return counts;

@@ -706,7 +706,7 @@ void project_surface_on_best_fit_plane(Mesh_file& mesh)
 void write_mesh_file_with_fields(const std::string& path, const Mesh_file& mesh, const MU::IO::VTK_fields& cells,
                                  const MU::IO::VTK_fields& points)
 {
-  const std::string extension = MU::IO::internal::lowercase_extension(path);
+  const std::string extension = MU::IO::lowercase_extension(path);
   if(extension == ".vtk") return MU::IO::write_VTK(path, mesh, cells, points);
   if(extension == ".vtu") return MU::IO::write_VTU(path, mesh, cells, points);
   if(extension != ".obj" || !mesh.rest.empty()) return MU::IO::write_mesh_file(path, mesh);

@@ -5,7 +5,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/GMSH_sections.h>
 #include <CGAL/Mesh_untangling/IO/internal/GMSH_stream.h>
 #include <CGAL/Mesh_untangling/IO/internal/GMSH_writing.h>
@@ -84,7 +84,7 @@ inline void write_GMSH(const std::string& path, const Mesh_file& mesh)
     internal::sort_without_duplicates(fixed);
   }
   const internal::GMSH_mesh_elements elements = internal::GMSH_elements_of(mesh);
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   if(mesh.has_fixed)

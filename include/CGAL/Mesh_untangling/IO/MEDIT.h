@@ -56,7 +56,7 @@ inline void write_MEDIT(const std::string& path, const Mesh_file& mesh)
   internal::check_edges_and_corners(path, mesh);
   internal::Single_geometry geometry = internal::single_geometry(mesh);
   const int dimension = geometry.dimension == 2 && !internal::has_negative_zero_z(*geometry.points) ? 2 : 3;
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "MeshVersionFormatted 2\n\nDimension " << dimension << "\n\n";
   out << "Vertices\n" << geometry.points->size() << '\n';

@@ -67,7 +67,7 @@ inline void write_OBJ(const std::string& path, const Mesh_file& mesh)
     internal::check_file_vertices(path, mesh);
   const std::vector<std::array<double, 3>>& positions =
     welded ? mesh.file_vertices : mesh.rest_dimension != 0 ? mesh.rest : mesh.map;
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   for(const std::array<double, 3>& p : positions) {
     out << "v ";

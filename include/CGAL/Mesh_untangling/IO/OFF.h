@@ -5,7 +5,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
 #include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
@@ -159,7 +159,7 @@ inline void write_OFF(const std::string& path, const Mesh_file& mesh)
   internal::check_for_writing(path, mesh);
   internal::check_faces_only(path, mesh, "OFF");
   const std::vector<std::array<double, 3>>& points = *internal::single_geometry(mesh).points;
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "OFF\n" << points.size() << ' ' << mesh.simplices.size() + mesh.cells.size() << " 0\n";
   for(const std::array<double, 3>& p : points) {

@@ -5,7 +5,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/binary_numbers.h>
 #include <CGAL/Mesh_untangling/IO/internal/geometry_dimension.h>
@@ -396,7 +396,7 @@ inline void write_STL(const std::string& path, const Mesh_file& mesh)
                                     + " are at the same point " + internal::STL_point_text(points[v])
                                     + ": STL stores no connectivity, they would be read back as one vertex");
     }
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "solid mesh\n";
   for(const std::array<std::size_t, 4>& f : mesh.simplices) {

@@ -5,7 +5,7 @@
 
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/mesh_file_checks.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
@@ -173,7 +173,7 @@ inline void write_TLC_input(const std::string& path, const Mesh_file& mesh)
     throw Write_error(path, "the .input format holds simplices only, not quadrilaterals, hexahedra or other cells");
   if(mesh.rest_dimension == 0 || mesh.map_dimension == 0)
     throw Write_error(path, "the .input format needs both the rest and the map positions");
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   internal::write_input_positions(out, mesh.rest, mesh.rest_dimension);
   internal::write_input_positions(out, mesh.map, mesh.map_dimension);

@@ -78,7 +78,7 @@ inline void write_VTK(const std::string& path, const Mesh_file& mesh, const VTK_
   const internal::VTK_output output = internal::checked_VTK_output(path, mesh, cell_fields, point_fields);
   internal::check_VTK_edges_and_corners(path, mesh);
   const std::vector<std::array<double, 3>>& points = output.points;
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   out << "# vtk DataFile Version 2.0\nMesh_untangling\nASCII\nDATASET UNSTRUCTURED_GRID\n";
   out << "POINTS " << points.size() << " double\n";

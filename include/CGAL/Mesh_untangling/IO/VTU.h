@@ -6,7 +6,7 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK_field.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/VTK_field_rules.h>
 #include <CGAL/Mesh_untangling/IO/internal/VTU_document.h>
@@ -81,7 +81,7 @@ inline void write_VTU(const std::string& path, const Mesh_file& mesh, const VTK_
 {
   const internal::VTK_output output = internal::checked_VTK_output(path, mesh, cell_fields, point_fields);
   internal::check_VTK_edges_and_corners(path, mesh);
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   internal::write_VTU_file(file.stream(), mesh, output.points, cell_fields, output.point_fields);
   file.commit();
 }

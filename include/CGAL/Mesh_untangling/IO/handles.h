@@ -4,7 +4,7 @@
 #define CGAL_MESH_UNTANGLING_IO_HANDLES_H
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_formatting.h>
 #include <CGAL/Mesh_untangling/IO/internal/number_parsing.h>
@@ -60,7 +60,7 @@ inline std::vector<std::size_t> read_handles(const std::string& path, std::size_
 /// \throws Write_error if the file cannot be written.
 inline void write_handles(const std::string& path, const std::vector<std::size_t>& ids)
 {
-  internal::Atomic_output_file file(path);
+  Atomic_output_file file(path);
   std::ostream& out = file.stream();
   for(std::size_t id : ids) {
     internal::write_number(out, id);

@@ -23,7 +23,6 @@
 namespace CGAL {
 namespace Mesh_untangling {
 namespace IO {
-namespace internal {
 
 /// The extensions read_mesh_file() and write_mesh_file() take, lowercase.
 inline const std::array<const char*, 8>& mesh_file_extensions()
@@ -32,6 +31,7 @@ inline const std::array<const char*, 8>& mesh_file_extensions()
   return extensions;
 }
 
+/// Whether read_mesh_file() and write_mesh_file() take the extension (lowercase, with its dot).
 inline bool is_mesh_file_extension(const std::string& lowercase_extension)
 {
   const auto& all = mesh_file_extensions();
@@ -46,6 +46,7 @@ inline std::string supported_extensions()
   return text;
 }
 
+/// The extension of `path` in lowercase, with its dot (empty when it has none).
 inline std::string lowercase_extension(const std::string& path)
 {
   std::string extension = std::filesystem::path(path).extension().string();
@@ -54,6 +55,7 @@ inline std::string lowercase_extension(const std::string& path)
   return extension;
 }
 
+/// The message for a path whose extension no reader or writer takes.
 inline std::string unsupported_extension(const std::string& path)
 {
   const std::string extension = std::filesystem::path(path).extension().string();
@@ -61,7 +63,6 @@ inline std::string unsupported_extension(const std::string& path)
   return what + " (" + supported_extensions() + ")";
 }
 
-} // namespace internal
 
 /// \ingroup PkgMeshUntanglingIO
 /// Reads a mesh file, choosing the format from the extension (case-insensitive):
@@ -71,7 +72,7 @@ inline std::string unsupported_extension(const std::string& path)
 /// \throws Read_error if the extension is not one of these, or as the reader does.
 inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& welding = OBJ_welding())
 {
-  const std::string extension = internal::lowercase_extension(path);
+  const std::string extension = lowercase_extension(path);
   if(extension == ".obj")
     return read_OBJ(path, welding);
   if(extension == ".off")
@@ -88,7 +89,7 @@ inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& weld
     return read_STL(path);
   if(extension == ".input")
     return read_TLC_input(path);
-  throw Read_error(path, 0, internal::unsupported_extension(path));
+  throw Read_error(path, 0, unsupported_extension(path));
 }
 
 /// \ingroup PkgMeshUntanglingIO
@@ -96,7 +97,7 @@ inline Mesh_file read_mesh_file(const std::string& path, const OBJ_welding& weld
 /// \throws Write_error if the extension is not supported, or as the writer does.
 inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
 {
-  const std::string extension = internal::lowercase_extension(path);
+  const std::string extension = lowercase_extension(path);
   if(extension == ".obj")
     return write_OBJ(path, mesh);
   if(extension == ".off")
@@ -113,7 +114,7 @@ inline void write_mesh_file(const std::string& path, const Mesh_file& mesh)
     return write_STL(path, mesh);
   if(extension == ".input")
     return write_TLC_input(path, mesh);
-  throw Write_error(path, internal::unsupported_extension(path));
+  throw Write_error(path, unsupported_extension(path));
 }
 
 } // namespace IO

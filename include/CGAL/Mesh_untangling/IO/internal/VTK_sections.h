@@ -10,7 +10,7 @@
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/VTK_field.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Text_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/VTK_binary_values.h>
 #include <CGAL/Mesh_untangling/IO/internal/VTK_cell_types.h>

@@ -66,13 +66,18 @@ inline const char* solid_cell_name(int size)
   return kind == nullptr ? "cell" : kind->name;
 }
 
-// The name of cell `c` of `mesh`, in messages.
+} // namespace internal
+
+/// The name of cell `c` of `mesh` in messages ("hexahedron", "prism", ...);
+/// public through mesh_file_io.h.
 inline std::string cell_name_in(const Mesh_file& mesh, std::size_t c)
 {
   if(mesh.cell_size == Mesh_file::mixed_cells)
-    return solid_cell_name(c < mesh.cell_sizes.size() ? mesh.cell_sizes[c] : 0);
+    return internal::solid_cell_name(c < mesh.cell_sizes.size() ? mesh.cell_sizes[c] : 0);
   return mesh.cell_size == 8 ? "hexahedron" : "quadrilateral";
 }
+
+namespace internal {
 
 // `ids` reordered from VTK's order into Mesh_file's, or back.
 inline std::array<std::size_t, 8> in_VTK_order(const Solid_cell_kind& kind, const std::array<std::size_t, 8>& ids)

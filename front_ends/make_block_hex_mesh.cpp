@@ -167,7 +167,7 @@ int main(int argc, char** argv)
   char* end = nullptr;
   const long n = std::strtol(args[1].c_str(), &end, 10);
   const std::string output = args[2];
-  if(*end != 0 || n < 1 || n > 200 || IO::internal::lowercase_extension(output) != ".vtk") {
+  if(*end != 0 || n < 1 || n > 200 || IO::lowercase_extension(output) != ".vtk") {
     std::cerr << usage;
     return 2;
   }

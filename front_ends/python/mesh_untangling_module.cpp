@@ -184,7 +184,7 @@ void copy_mixed_cells(const Ids& ids, std::size_t n, Mesh_file& mesh)
     for(int i = 0; i < size; ++i) mesh.cells[std::size_t(k)][std::size_t(i)] = std::size_t(r(k, i));
     const std::string defect = IO::internal::simplex_defect(mesh.cells[std::size_t(k)], size, n, 0);
     if(!defect.empty())
-      throw py::value_error("elements: " + IO::internal::cell_name_in(mesh, std::size_t(k)) + " " +
+      throw py::value_error("elements: " + IO::cell_name_in(mesh, std::size_t(k)) + " " +
                             std::to_string(k) + ": " + defect);
   }
 }
@@ -624,7 +624,7 @@ Python_mesh read_file(const std::string& path, const py::handle& weld)
   const IO::OBJ_welding welding = welding_of(weld);
   {
     py::gil_scoped_release release;
-    mesh = IO::internal::lowercase_extension(path) == ".vtk" ? IO::read_VTK(path, &cell_fields, &point_fields)
+    mesh = IO::lowercase_extension(path) == ".vtk" ? IO::read_VTK(path, &cell_fields, &point_fields)
                                                              : IO::read_mesh_file(path, welding);
   }
   Python_mesh m;
@@ -710,7 +710,7 @@ void write_file(const std::string& path, const py::handle& vertices, const py::h
       if(flags[v]) mesh.fixed.push_back(v);
     mesh.has_fixed = true;
   }
-  if(IO::internal::lowercase_extension(path) != ".vtk" && (!point_fields.is_none() || !cell_fields.is_none()))
+  if(IO::lowercase_extension(path) != ".vtk" && (!point_fields.is_none() || !cell_fields.is_none()))
     throw py::value_error(path + ": fields are written to .vtk files only");
   const IO::VTK_fields cells = fields_of(cell_fields, mesh.simplices.size() + mesh.cells.size(), "cell");
   const IO::VTK_fields points = fields_of(point_fields, mesh.map.size(), "point");

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_ATOMIC_OUTPUT_FILE_H
-#define CGAL_MESH_UNTANGLING_IO_INTERNAL_ATOMIC_OUTPUT_FILE_H
+#ifndef CGAL_MESH_UNTANGLING_IO_ATOMIC_OUTPUT_FILE_H
+#define CGAL_MESH_UNTANGLING_IO_ATOMIC_OUTPUT_FILE_H
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
 #include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
@@ -17,26 +17,28 @@
 namespace CGAL {
 namespace Mesh_untangling {
 namespace IO {
-namespace internal {
 
-// Writes to a temporary file and renames it over the target on commit(), so
-// that a failed or interrupted write never leaves a partial file under the
-// target's name (a half-written map would be read back as a smaller mesh or
-// fail much later). The destructor removes the temporary if not committed;
-// so does a SIGINT or SIGTERM once remove_temporaries_on_interrupt() is on.
-// A symbolic link is followed: its target is replaced, the link kept.
+/// \ingroup PkgMeshUntanglingIO
+/// One output file written whole or not at all: writes to a temporary file
+/// and renames it over the target on commit(), so that a failed or
+/// interrupted write never leaves a partial file under the target's name (a
+/// half-written map would be read back as a smaller mesh or fail much
+/// later).  The destructor removes the temporary if not committed; so does
+/// a SIGINT or SIGTERM once remove_temporaries_on_interrupt()
+/// (Output_files.h) is on.  A symbolic link is followed: its target is
+/// replaced, the link kept.
 class Atomic_output_file
 {
 public:
   explicit Atomic_output_file(const std::string& target)
-    : target_(target), destination_(resolve_output_target(target)), temporary_(temporary_name(destination_)),
-      slot_(register_temporary(temporary_))
+    : target_(target), destination_(internal::resolve_output_target(target)), temporary_(internal::temporary_name(destination_)),
+      slot_(internal::register_temporary(temporary_))
   {
     errno = 0;
     out_.open(temporary_, std::ios::binary | std::ios::trunc);
     if(!out_) {
       const int error = errno;
-      unregister_temporary(slot_);
+      internal::unregister_temporary(slot_);
       throw Write_error(target_, "cannot create temporary file '" + temporary_ + "': "
                                      + std::generic_category().message(error));
     }
@@ -51,7 +53,7 @@ public:
       out_.close();
       std::remove(temporary_.c_str());
     }
-    unregister_temporary(slot_);
+    internal::unregister_temporary(slot_);
   }
 
   std::ostream& stream() { return out_; }
@@ -67,7 +69,7 @@ public:
       throw Write_error(target_, "cannot rename '" + temporary_ + "' to the target: "
                                      + std::generic_category().message(errno));
     committed_ = true;
-    unregister_temporary(slot_);
+    internal::unregister_temporary(slot_);
     slot_ = -1;
   }
 
@@ -94,9 +96,8 @@ private:
   bool committed_ = false;
 };
 
-} // namespace internal
 } // namespace IO
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_ATOMIC_OUTPUT_FILE_H
+#endif // CGAL_MESH_UNTANGLING_IO_ATOMIC_OUTPUT_FILE_H

@@ -60,7 +60,7 @@ int main(int argc, char** argv)
   }
   namespace T = Mesh_untangling_tools;
   if(seamless) {
-    if(IO::internal::lowercase_extension(argv[5]) != ".obj") {
+    if(IO::lowercase_extension(argv[5]) != ".obj") {
       std::cerr << "make_tangled_mesh: error: " << argv[5] << ": a seamless parameterization is written as .obj\n";
       return 2;
     }

@@ -18,7 +18,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/IO/mesh_parts.h>
 #include <CGAL/Mesh_untangling/version.h>
@@ -266,7 +266,7 @@ void write_report(const std::string& path, const Arguments& args, const Problem&
   j["seconds"] = r.seconds;
   j["eps_loop_seconds"] = solve_seconds;   // (the rest: process 0's set-up and split, the verdict, the gathering)
   j["peak_memory_bytes_per_process"] = memory;
-  IO::internal::Atomic_output_file file(path);
+  IO::Atomic_output_file file(path);
   file.stream() << j.dump(2) << "\n";
   file.commit();
 }

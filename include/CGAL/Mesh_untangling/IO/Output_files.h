@@ -1,9 +1,10 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_UNTANGLING_IO_INTERNAL_OUTPUT_FILES_H
-#define CGAL_MESH_UNTANGLING_IO_INTERNAL_OUTPUT_FILES_H
+#ifndef CGAL_MESH_UNTANGLING_IO_OUTPUT_FILES_H
+#define CGAL_MESH_UNTANGLING_IO_OUTPUT_FILES_H
 
 #include <CGAL/Mesh_untangling/IO/Read_error.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
 #include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
 #include <CGAL/Mesh_untangling/IO/internal/output_target.h>
 
@@ -18,8 +19,8 @@
 namespace CGAL {
 namespace Mesh_untangling {
 namespace IO {
-namespace internal {
 
+/// \ingroup PkgMeshUntanglingIO
 /// The output files of one run, committed together or not at all.
 ///
 /// add() checks a target before any work is done (a regular file or a new
@@ -47,22 +48,22 @@ public:
     for(const Entry& e : entries_) {
       if(!committed_)
         std::remove(e.temporary.c_str());
-      unregister_temporary(e.slot);
+      internal::unregister_temporary(e.slot);
     }
   }
 
   /// Checks `target` and returns the name to write it to.
-  /// \throws Write_error as resolve_output_target() and check_directory_writable().
+  /// \throws Write_error when the target is not a regular file or a new name in a directory where a file can be created.
   std::string add(const std::string& target)
   {
-    const std::string destination = resolve_output_target(target);
+    const std::string destination = internal::resolve_output_target(target);
     for(const Entry& e : entries_)
       if(same_path(e.destination, destination))
         throw Write_error(target, "the same file as the output " + e.target);
-    check_directory_writable(destination);
+    internal::check_directory_writable(destination);
     const std::string extension = std::filesystem::path(destination).extension().string();
-    const std::string temporary = temporary_name(destination, extension);
-    entries_.push_back(Entry{target, destination, temporary, register_temporary(temporary)});
+    const std::string temporary = internal::temporary_name(destination, extension);
+    entries_.push_back(Entry{target, destination, temporary, internal::register_temporary(temporary)});
     return temporary;
   }
 
@@ -73,7 +74,7 @@ public:
     for(std::size_t i = 0; i < entries_.size(); ++i)
       if(entries_[i].temporary == temporary) {
         std::remove(temporary.c_str());
-        unregister_temporary(entries_[i].slot);
+        internal::unregister_temporary(entries_[i].slot);
         entries_.erase(entries_.begin() + std::ptrdiff_t(i));
         return;
       }
@@ -129,9 +130,15 @@ private:
   bool committed_ = false;
 };
 
-} // namespace internal
+/// \ingroup PkgMeshUntanglingIO
+/// From now on SIGINT and SIGTERM first remove the temporaries of every
+/// Output_files and Atomic_output_file not yet committed, then end the
+/// process as they would have (exit status 130, 143): an interrupted run
+/// leaves its targets as they were.  (POSIX; elsewhere it does nothing.)
+inline void remove_temporaries_on_interrupt() { internal::remove_temporaries_on_interrupt(); }
+
 } // namespace IO
 } // namespace Mesh_untangling
 } // namespace CGAL
 
-#endif // CGAL_MESH_UNTANGLING_IO_INTERNAL_OUTPUT_FILES_H
+#endif // CGAL_MESH_UNTANGLING_IO_OUTPUT_FILES_H

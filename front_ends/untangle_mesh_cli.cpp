@@ -12,11 +12,9 @@
 #include "untangle_mesh_file.h"
 
 #include <CGAL/Mesh_untangling/Added_vertex.h>
+#include <CGAL/Mesh_untangling/IO/Atomic_output_file.h>
+#include <CGAL/Mesh_untangling/IO/Output_files.h>
 #include <CGAL/Mesh_untangling/IO/handles.h>
-#include <CGAL/Mesh_untangling/IO/internal/Atomic_output_file.h>
-#include <CGAL/Mesh_untangling/IO/internal/Output_files.h>
-#include <CGAL/Mesh_untangling/IO/internal/Temporary_files.h>
-#include <CGAL/Mesh_untangling/IO/internal/solid_cell_kinds.h>
 #include <CGAL/Mesh_untangling/IO/mesh_file_io.h>
 #include <CGAL/Mesh_untangling/Target_surface.h>
 #include <CGAL/Mesh_untangling/Untangling_step.h>
@@ -85,7 +83,7 @@ volatile std::sig_atomic_t interrupting_signal = 0;
 extern "C" void stop_after_the_eps_step(int signal)
 {
   interrupting_signal = signal;
-  IO::internal::remove_temporaries_on_interrupt();   // (sigaction: safe in a handler)
+  IO::remove_temporaries_on_interrupt();   // (sigaction: safe in a handler)
 }
 
 /// Holds stop_after_the_eps_step() as the handler of SIGINT and SIGTERM while it lives.
@@ -100,7 +98,7 @@ public:
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
   }
-  ~Stop_on_signal() { IO::internal::remove_temporaries_on_interrupt(); }
+  ~Stop_on_signal() { IO::remove_temporaries_on_interrupt(); }
   Stop_on_signal(const Stop_on_signal&) = delete;
   Stop_on_signal& operator=(const Stop_on_signal&) = delete;
 };
@@ -126,7 +124,7 @@ int exit_code(const Verdict& verdict)
 /// Bad usage or input: reported, nothing written, exit code 2.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
-using IO::internal::lowercase_extension;
+using IO::lowercase_extension;
 
 std::string default_output(const std::string& input)
 {
@@ -149,9 +147,9 @@ bool same_file(const std::string& a, const std::string& b)
 void check_output_paths(const Arguments& args)
 {
   const std::string ext = lowercase_extension(args.output);
-  if(!IO::internal::is_mesh_file_extension(ext))
+  if(!IO::is_mesh_file_extension(ext))
     throw Usage_error(args.output + ": unsupported output extension '" + fs::path(args.output).extension().string() +
-                      "' (" + IO::internal::supported_extensions() + ")");
+                      "' (" + IO::supported_extensions() + ")");
   const std::pair<const char*, const std::string*> inputs[] = {
     {"the input", &args.input}, {"the rest file", &args.rest}, {"the fixed-vertex file", &args.fixed}};
   const std::pair<const char*, const std::string*> outputs[] = {
@@ -322,7 +320,7 @@ void check_phantoms_output(const Arguments& args, const Mesh_file& mesh)
     throw Usage_error(args.phantoms + ": no phantom element protects " + element_kind(mesh) +
                       " (their corner simplices overlap: fix the boundary)");
   const std::string ext = lowercase_extension(args.phantoms);
-  if(!IO::internal::is_mesh_file_extension(ext) || ext == ".input")
+  if(!IO::is_mesh_file_extension(ext) || ext == ".input")
     throw Usage_error(args.phantoms + ": --phantoms writes a mesh without rest positions: give a .vtk, .vtu, .mesh, "
                       ".msh, .off or .obj file (.vtk and .vtu carry the fields)");
   if(mesh.simplex_size == 4 && (ext == ".obj" || ext == ".off"))
@@ -464,12 +462,12 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
     j["stars_checked"] = false;
     j["inverted_cell_ids"] = v.inverted_cell_ids;
     nlohmann::ordered_json kinds = nlohmann::ordered_json::array();
-    for(std::size_t c : v.inverted_cell_ids) kinds.push_back(MU::IO::internal::cell_name_in(mesh, c));
+    for(std::size_t c : v.inverted_cell_ids) kinds.push_back(MU::IO::cell_name_in(mesh, c));
     j["inverted_cell_kinds"] = kinds;
     if(mesh.cell_size == Mesh_file::mixed_cells) {
       nlohmann::ordered_json by_kind = nlohmann::ordered_json::object();
       for(std::size_t c = 0; c < mesh.cells.size(); ++c) {
-        nlohmann::ordered_json& count = by_kind[MU::IO::internal::cell_name_in(mesh, c)];
+        nlohmann::ordered_json& count = by_kind[MU::IO::cell_name_in(mesh, c)];
         count = count.is_null() ? 1 : count.get<std::size_t>() + 1;
       }
       j["cells_by_kind"] = by_kind;
@@ -642,7 +640,7 @@ struct Temporary_outputs
 
 /// Checks every output before any work (regular file or new name, links
 /// followed, a file can be created beside it) and names its temporary.
-Temporary_outputs reserve_outputs(const Arguments& args, IO::internal::Output_files& files)
+Temporary_outputs reserve_outputs(const Arguments& args, IO::Output_files& files)
 {
   Temporary_outputs t;
   t.output = files.add(args.output);
@@ -670,7 +668,7 @@ template <class Write>
 void write_text_file(const std::string& target, const std::string& temporary, Write write)
 {
   write_for(target, [&] {
-    IO::internal::Atomic_output_file file(temporary);
+    IO::Atomic_output_file file(temporary);
     write(file.stream());
     file.commit();
   });
@@ -705,7 +703,7 @@ void add_parent_fields(const Mesh_file& mesh, const Run_record& record, IO::VTK_
 /// Writes every output to its temporary, commits them all together and
 /// returns the verdict on the result as written.
 Verdict write_outputs(const Arguments& args, const Mesh_file& mesh, Run& run, const Temporary_outputs& to,
-                      IO::internal::Output_files& files)
+                      IO::Output_files& files)
 {
   // Fields are measured on the coordinates as written: the writers print
   // the shortest text that reads back to the same doubles.
@@ -813,7 +811,7 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
     if(mesh.cell_size != 0 && !verdict.inverted_cell_ids.empty()) {
       std::string named;
       for(std::size_t i = 0; i < verdict.inverted_cell_ids.size() && i < 10; ++i)
-        named += (i ? ", " : "") + MU::IO::internal::cell_name_in(mesh, verdict.inverted_cell_ids[i]) + " " +
+        named += (i ? ", " : "") + MU::IO::cell_name_in(mesh, verdict.inverted_cell_ids[i]) + " " +
                  std::to_string(verdict.inverted_cell_ids[i]);
       std::fprintf(stderr, "inverted cells left: %s%s\n", named.c_str(),
                    verdict.inverted_cell_ids.size() > 10 ? ", ..." : "");
@@ -929,7 +927,7 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     run.fixed_source = "boundary";
   }
   check_pictures(args, mesh);
-  IO::internal::Output_files files;
+  IO::Output_files files;
   const Temporary_outputs to = reserve_outputs(args, files);
   const Verdict before = check_mesh_file(mesh, run.fixed);
   if(!args.svg_input.empty()) {
@@ -1039,7 +1037,7 @@ int run(const Arguments& args)
   check_output_format(args.output, mesh);
   check_pictures(args, mesh);
   check_phantoms_output(args, mesh);
-  IO::internal::Output_files files;
+  IO::Output_files files;
   const Temporary_outputs temporaries = reserve_outputs(args, files);
 
   if(mesh.cell_size == 0 && !mesh.has_corner_map()) run.orientation = reference_orientations(mesh);
@@ -1214,7 +1212,7 @@ int main(int argc, char** argv)
   // A first SIGINT or SIGTERM stops the run after its eps step and the
   // outputs are written; a second one, or one before the run, ends the
   // program, and no *.tmp is left beside the outputs.
-  IO::internal::remove_temporaries_on_interrupt();
+  IO::remove_temporaries_on_interrupt();
   try {
     return run(args);
   } catch(const IO::Read_error& e) {
