@@ -495,6 +495,7 @@ void write_report(std::ostream& out, const Arguments& args, const std::string& f
   j["continuation"] = args.continuation;
   j["continuation_steps"] = r.continuation_steps;
   j["continuation_motion"] = r.continuation_motion;
+  j["started_from_rest"] = r.started_from_rest;
   j["input_returned"] = r.input_returned;
   j["refinement"] = args.refine;
   j["vertices_added"] = r.vertices_added;
@@ -779,6 +780,9 @@ void print_summary(const Arguments& args, const Mesh_file& mesh, const Run& run,
     if(r.continuation_steps > 0)
       std::fprintf(stderr, "continuation from the rest shape: %zu steps ended locally invertible (%.1f %% of the motion)\n",
                    r.continuation_steps, 100 * r.continuation_motion);
+    if(r.started_from_rest)
+      std::fprintf(stderr, "nothing fixed: started from the rest shape, placed on the map by the rigid motion that "
+                           "best fits it (--continuation never: from the given map)\n");
     if(r.vertices_added > 0)
       std::fprintf(stderr, "refinement: %zu vertices added (interior edges split at their midpoints)\n",
                    r.vertices_added);
@@ -1162,7 +1166,7 @@ int main(int argc, char** argv)
   app.add_option("--continuation", args.continuation, "move the fixed vertices from their rest positions in steps, "
                  "each untangled from the previous map (needs a rest shape in the map's dimension and a fixed vertex; "
                  "the free vertices start at rest): 'auto' when the direct untangling of a free-boundary problem fails, "
-                 "'never', 'always'")
+                 "and with nothing fixed a start from the rest placed on the map, 'never', 'always'")
     ->check(CLI::IsMember({"auto", "never", "always"}));
   app.add_option("--continuation-steps", args.continuation_steps, "equal steps the continuation starts with "
                  "(a failed step is halved)")->check(whole_number_from_1);

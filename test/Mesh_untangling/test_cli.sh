@@ -798,6 +798,26 @@ if [ -n "$DATA" ] && [ -f "$rocker/parameter.vtk" ]; then
   check "one published step: 13 inverted before" json_is better.json inverted_before 13
   check "one published step: fewer inverted than the input" [ "$(json_get better.json inverted_after)" -lt 13 ]
 fi
+# Nothing fixed, the rest given: the run starts from the rest placed on the
+# map (its shape distortion is the rest's, 1), unless --continuation never;
+# with the boundary fixed it does not apply.
+"$MAKE" cube 6 1.0 3 restcube.vtk > /dev/null || { echo "FAIL: make_tangled_mesh restcube" >&2; exit 1; }
+: > nothing_fixed.txt
+run rest_start restcube.vtk --rest restcube-rest.vtk --fixed nothing_fixed.txt -o rest_start.vtk \
+  --report rest_start.json -q
+check "nothing fixed, rest given: exit 0" rc_is rest_start 0
+check "nothing fixed, rest given: started from the rest" json_is rest_start.json started_from_rest true
+check "nothing fixed, rest given: the input's inversions reported" json_positive rest_start.json inverted_before
+check "nothing fixed, rest given: the rest's shapes" \
+  awk -v m="$(json_get rest_start.json mean_shape_distortion)" 'BEGIN { exit !(m >= 1 && m < 1 + 1e-6) }'
+check "nothing fixed, rest given: said on stderr" err_has rest_start "started from the rest shape"
+run rest_never restcube.vtk --rest restcube-rest.vtk --fixed nothing_fixed.txt --continuation never \
+  -o rest_never.vtk --report rest_never.json -q
+check "nothing fixed, --continuation never: from the given map" json_is rest_never.json started_from_rest false
+run rest_fixed restcube.vtk --rest restcube-rest.vtk -o rest_fixed.vtk --report rest_fixed.json -q
+check "boundary fixed: exit 0" rc_is rest_fixed 0
+check "boundary fixed: not started from the rest" json_is rest_fixed.json started_from_rest false
+
 # Stopped by the clock (stage 1's restarts, the continuation): the status
 # and the summary line say so, not "inverted elements are left after the
 # iteration budget".

@@ -79,6 +79,7 @@ class Result:
     final_epsilon: float
     continuation_steps: int
     continuation_motion: float
+    started_from_rest: bool
     outer_iterations: int
     inner_iterations: int
     energy_evaluations: int

@@ -127,6 +127,10 @@ struct Untangling_result
   /// 1 when it was blocked or stopped short (the last step then jumped from
   /// there), 0 when it did not run
   double continuation_motion = 0;
+  /// With nothing fixed, whether the map comes from the run that started at
+  /// the rest shape, placed on the given map by the rigid motion that best
+  /// fits it (the energy's minimum up to that motion).
+  bool started_from_rest = false;
   std::size_t outer_iterations = 0;    ///< ε steps
   std::size_t inner_iterations = 0;    ///< solver iterations, all ε steps together
   std::size_t energy_evaluations = 0;  ///< evaluations of F (with or without gradient)

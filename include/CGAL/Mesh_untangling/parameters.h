@@ -102,11 +102,14 @@ enum class Target_scaling
 /// previous, locally invertible, map.  It needs rest positions in the
 /// dimension of the map (a rest shape: `rest_point_map`, `rest_points`, a
 /// 2D domain) and at least one fixed vertex; the free vertices then start at
-/// their rest positions, so their given positions are not used.
+/// their rest positions, so their given positions are not used.  With
+/// nothing fixed there is no motion to follow: the run then starts from the
+/// rest shape itself, placed on the given map by the rigid motion that best
+/// fits it (`Untangling_result::started_from_rest`), unless `NEVER`.
 enum class Continuation
 {
   AUTOMATIC,   ///< with a free boundary vertex, when the direct untangling does not end locally invertible (default)
-  NEVER,       ///< the direct untangling only: the published scheme
+  NEVER,       ///< the direct untangling from the given map only: the published scheme
   ALWAYS       ///< the continuation only (where it applies; otherwise the direct untangling)
 };
 

@@ -89,6 +89,15 @@ public:
   /// (A sliding boundary would leave its target for the circle.)
   bool convex_start_applies() const { return d == 2 && !anything_fixed_ && !cells_ && !seamless_ && !sliding_; }
 
+  /// Whether a run with nothing fixed starts from the rest shape placed on
+  /// the map (rest_start.h; the rest must exist: rest_shape), unless the
+  /// continuation is turned off.  The rest of a seamless problem is a 3D
+  /// surface; a sliding boundary stays on its target.
+  bool rest_start_applies(const Untangling_options& options) const
+  {
+    return options.continuation != Continuation::NEVER && !anything_fixed_ && !seamless_ && !sliding_;
+  }
+
   /// Whether a motion of the fixed vertices from a rest shape may be
   /// followed (continuation.h); the rest must exist too (continuation_start).
   /// The rest of a seamless problem is a 3D surface, not a start in the

@@ -11,7 +11,8 @@
 //      local repair at its first stall where rung 2 applies), or by
 //      continuation from the rest shape (continuation.h), or the carried
 //      start (carried_start.h) or the direct run and then the continuation;
-//      in 2D with nothing fixed, the convex start (convex_start.h);
+//      with nothing fixed, the run from the rest shape (rest_start.h), and
+//      in 2D the convex start (convex_start.h);
 //   2. the local repair of the few elements left inverted (local_repair.h);
 //   3. on request, local refinement, whose refined problems climb rungs 1
 //      and 2 again (refinement/local_refinement.h);
@@ -27,6 +28,7 @@
 #include <CGAL/Mesh_untangling/internal/driver/carried_start.h>
 #include <CGAL/Mesh_untangling/internal/driver/convex_start.h>
 #include <CGAL/Mesh_untangling/internal/driver/quality_rung.h>
+#include <CGAL/Mesh_untangling/internal/driver/rest_start.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
@@ -68,6 +70,23 @@ Run<d> run_by_continuation(Untangling_input<d>& in, const Untangling_options& op
   return continued;
 }
 
+/// The run from the rest shape (rest_start.h), then, where it fails, the
+/// direct run from the given map `given` on the budget left; the direct run
+/// alone when there is no rest to start from.
+template <int d>
+Run<d> run_from_the_rest(Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& given,
+                         const Budget& budget, const Problem_kind<d>& kind, const Protection_request<d>& protection)
+{
+  std::optional<Run<d>> from_rest = untangle_from_rest_start<d>(in, budget.whole(), protection);
+  if(!from_rest) return run_directly<d>(in, budget.whole(), kind, protection);
+  Run<d> run = std::move(*from_rest);
+  if(!reached_goal(run.result.status) && budget.leaves_room_after(run.result)) {
+    const auto rest_map = std::exchange(in.positions, given);
+    keep_the_better(run, rest_map, run_directly<d>(in, budget.left_after(run.result), kind, protection), in);
+  }
+  return run;
+}
+
 /// Untangles `in` (free vertices only) from its map `given` up the ladder
 /// of the file's comment, as `options` ask.  `phantoms_used`, when given,
 /// receives the phantoms of the run whose result is returned; with
@@ -105,7 +124,8 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
                       in);
     }
   } else {
-    run = run_directly<d>(in, budget.whole(), kind, protection);
+    run = kind.rest_start_applies(options) ? run_from_the_rest<d>(in, given, budget, kind, protection)
+                                           : run_directly<d>(in, budget.whole(), kind, protection);
     if(kind.convex_start_applies() && budget.leaves_room_after(run.result)) {
       const auto direct_map = in.positions;
       if(std::optional<Run<d>> convex = untangle_from_convex_start<d>(in, budget.left_after(run.result), protection))
