@@ -804,7 +804,7 @@ fi
 "$MAKE" cube 6 1.0 3 restcube.vtk > /dev/null || { echo "FAIL: make_tangled_mesh restcube" >&2; exit 1; }
 : > nothing_fixed.txt
 run rest_start restcube.vtk --rest restcube-rest.vtk --fixed nothing_fixed.txt -o rest_start.vtk \
-  --report rest_start.json -q
+  --report rest_start.json
 check "nothing fixed, rest given: exit 0" rc_is rest_start 0
 check "nothing fixed, rest given: started from the rest" json_is rest_start.json started_from_rest true
 check "nothing fixed, rest given: the input's inversions reported" json_positive rest_start.json inverted_before
