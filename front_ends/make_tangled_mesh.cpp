@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_untangling contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase N AMPLITUDE SEED OUTPUT
+// make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|torus|seamcube|pillow|staircase|seamdisk N AMPLITUDE SEED OUTPUT
 // Writes a structured mesh of the unit square (2 N^2 triangles, or N^2
 // quadrilaterals) or cube (6 N^3 tetrahedra, or N^3 hexahedra) whose interior vertices are moved at random by up to
 // AMPLITUDE grid cells, boundary fixed.  quadsurface: the quadrilaterals of
@@ -19,7 +19,12 @@
 // N x N cells per face with 8 cones, a pillow with 4 cones, a staircase
 // polycube of 12 x 12 columns whose heights SEED draws, N x N cells per unit
 // face, hundreds of cones), written as an OBJ with seams; AMPLITUDE moves
-// the uv of half of the vertices off the seams.
+// the uv of half of the vertices off the seams.  seamdisk is one with a free
+// boundary: a ruffled disk of N rings whose folded projection is cut to a
+// cone of AMPLITUDE quarter turns (1 to 7 but 4) at its centre, SEED its
+// roughness (the setting of the paper's Fig. 18: runs can end with a
+// vertex wound twice, an extra singular vertex of the grid, which the
+// surface check reports).
 #include "generators.h"
 #include "memory_reuse.h"
 #include "problem_files.h"
@@ -41,7 +46,7 @@ namespace IO = CGAL::Mesh_untangling::IO;
 int main(int argc, char** argv)
 {
   Mesh_untangling_tools::reuse_freed_memory();
-  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|mixedcube|torus|seamcube|pillow|staircase "
+  const std::string usage = "usage: make_tangled_mesh square|cube|quadsquare|quadsurface|hexcube|mixedcube|torus|seamcube|pillow|staircase|seamdisk "
                             "N AMPLITUDE SEED OUTPUT\n";
   if(argc != 6) { std::cerr << usage; return 2; }
   const std::string shape = argv[1];
@@ -51,11 +56,14 @@ int main(int argc, char** argv)
   const double amplitude = std::strtod(argv[3], &end);
   const bool amplitude_ok = *end == 0 && amplitude >= 0 && amplitude <= 100;
   const long seed = std::strtol(argv[4], &end, 10);
-  const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow" || shape == "staircase";
+  const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow" || shape == "staircase" ||
+                        shape == "seamdisk";
+  const bool cone_ok = shape != "seamdisk" || (amplitude == std::floor(amplitude) && amplitude >= 1 && amplitude <= 7 && amplitude != 4);
   if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "quadsurface" && shape != "hexcube" &&
-      shape != "mixedcube" && !seamless) || !n_ok || (shape == "mixedcube" && n < 3) || !amplitude_ok || *end != 0 ||
-     seed < 0) {
-    std::cerr << usage << "N in [2, 2000] (mixedcube: [3, 2000]), AMPLITUDE in [0, 100] grid cells, SEED >= 0\n";
+      shape != "mixedcube" && !seamless) || !n_ok || (shape == "mixedcube" && n < 3) || !amplitude_ok || !cone_ok ||
+     *end != 0 || seed < 0) {
+    std::cerr << usage << "N in [2, 2000] (mixedcube: [3, 2000]), AMPLITUDE in [0, 100] grid cells (seamdisk: the "
+                          "cone's quarter turns, 1 to 7 but 4), SEED >= 0\n";
     return 2;
   }
   namespace T = Mesh_untangling_tools;
@@ -66,8 +74,10 @@ int main(int argc, char** argv)
     }
     auto surface = shape == "torus" ? T::make_seamless_torus(n) : shape == "seamcube" ? T::make_seamless_cube(n)
                  : shape == "pillow" ? T::make_seamless_pillow(n)
+                 : shape == "seamdisk" ? T::make_seamless_ruffled_disk(std::size_t(n), int(amplitude), static_cast<unsigned>(seed))
                                      : T::make_seamless_staircase(n, static_cast<unsigned>(seed));
-    const std::size_t moved = T::tangle_seamless(surface, amplitude, 0.5, static_cast<unsigned>(seed));
+    // (the disk's tangling is its folded projection)
+    const std::size_t moved = shape == "seamdisk" ? 0 : T::tangle_seamless(surface, amplitude, 0.5, static_cast<unsigned>(seed));
     try {
       IO::write_mesh_file(argv[5], surface);
     } catch(const IO::Write_error& e) {

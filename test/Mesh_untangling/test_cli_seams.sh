@@ -12,6 +12,8 @@
 # The same torus with its seams written as duplicated v (one per chart, as
 # quad-remeshing tools write them) is welded, untangled to the same uv and
 # written back with its own vertices; --fixed names them; --weld says how.
+# A seamless map with a free boundary and a cone that ends with vertices
+# wound twice says so (exit 1).
 # usage: test_cli_seams.sh UNTANGLE_MESH MAKE_TANGLED_MESH
 set -u
 to_duplicated_vertices="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/obj_seams_as_duplicated_vertices.py"
@@ -121,6 +123,23 @@ check "--refine of a welded OBJ into .obj: why" grep -q 'write a .vtk, or read i
 # lbfgs gets there too
 "$UNTANGLE" seamcube.obj -o cube-lbfgs.obj --solver lbfgs --quiet
 check "seamcube --solver lbfgs: exit 0" [ $? = 0 ]
+
+# a free boundary and a cone (seamdisk: the setting of the paper's Fig. 18):
+# the run ends with no inverted triangle but vertices wound twice: exit 1,
+# said so, the map written with its seams kept
+"$MAKE" seamdisk 4 2 0 seamdisk.obj > /dev/null
+check "seamdisk: made" [ -s seamdisk.obj ]
+"$UNTANGLE" seamdisk.obj -o seamdisk-out.obj --report seamdisk.json --quiet
+code=$?
+check "seamdisk: exit 1 (code $code)" [ "$code" = 1 ]
+check "seamdisk: not locally invertible" [ "$(json seamdisk.json locally_invertible)" = False ]
+check "seamdisk: no inverted triangle left" [ "$(json seamdisk.json inverted_after)" = 0 ]
+check "seamdisk: the vertices wound twice counted" [ "$(json seamdisk.json overwound_vertices)" -gt 0 ]
+check "seamdisk: the same seams and rotations" [ "$(json seamdisk.json seams_kept)" = True ]
+check "seamdisk: same OBJ layout" same_layout seamdisk.obj seamdisk-out.obj
+"$MAKE" seamdisk 4 4 0 x.obj > /dev/null 2> seamdisk-bad.err
+check "seamdisk with a cone of 4 quarter turns: exit 2" [ $? = 2 ]
+check "seamdisk with a cone of 4 quarter turns: what is wanted" grep -q "the cone's quarter turns, 1 to 7 but 4" seamdisk-bad.err
 
 # a seam whose sides are no transition: exit 2, the line and the edge named
 sed '0,/^vt 10 5$/s//vt 10.25 5/' torus.obj > bad.obj   # (u = 10: a seam's side)
