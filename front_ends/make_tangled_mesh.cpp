@@ -38,6 +38,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -52,18 +53,20 @@ int main(int argc, char** argv)
   const std::string shape = argv[1];
   char* end = nullptr;
   const long n = std::strtol(argv[2], &end, 10);
-  const bool n_ok = *end == 0 && n >= 2 && n <= 2000;
+  // (a seamless disk of N rings has 6 N (N + 1) + 1 vertices: 200 rings is a quarter million)
+  const bool n_ok = *end == 0 && n >= 2 && n <= (shape == "seamdisk" ? 200 : 2000);
   const double amplitude = std::strtod(argv[3], &end);
   const bool amplitude_ok = *end == 0 && amplitude >= 0 && amplitude <= 100;
   const long seed = std::strtol(argv[4], &end, 10);
   const bool seamless = shape == "torus" || shape == "seamcube" || shape == "pillow" || shape == "staircase" ||
                         shape == "seamdisk";
-  const bool cone_ok = shape != "seamdisk" || (amplitude == std::floor(amplitude) && amplitude >= 1 && amplitude <= 7 && amplitude != 4);
+  // (the cone's range is the generator's rule: make_seamless_ruffled_disk says what it takes)
+  const bool cone_ok = shape != "seamdisk" || amplitude == std::floor(amplitude);
   if((shape != "square" && shape != "cube" && shape != "quadsquare" && shape != "quadsurface" && shape != "hexcube" &&
       shape != "mixedcube" && !seamless) || !n_ok || (shape == "mixedcube" && n < 3) || !amplitude_ok || !cone_ok ||
      *end != 0 || seed < 0) {
-    std::cerr << usage << "N in [2, 2000] (mixedcube: [3, 2000]), AMPLITUDE in [0, 100] grid cells (seamdisk: the "
-                          "cone's quarter turns, 1 to 7 but 4), SEED >= 0\n";
+    std::cerr << usage << "N in [2, 2000] (mixedcube: [3, 2000], seamdisk: [2, 200]), AMPLITUDE in [0, 100] grid "
+                          "cells (seamdisk: the cone's quarter turns, an integer), SEED >= 0\n";
     return 2;
   }
   namespace T = Mesh_untangling_tools;
@@ -72,10 +75,17 @@ int main(int argc, char** argv)
       std::cerr << "make_tangled_mesh: error: " << argv[5] << ": a seamless parameterization is written as .obj\n";
       return 2;
     }
-    auto surface = shape == "torus" ? T::make_seamless_torus(n) : shape == "seamcube" ? T::make_seamless_cube(n)
-                 : shape == "pillow" ? T::make_seamless_pillow(n)
-                 : shape == "seamdisk" ? T::make_seamless_ruffled_disk(std::size_t(n), int(amplitude), static_cast<unsigned>(seed))
-                                     : T::make_seamless_staircase(n, static_cast<unsigned>(seed));
+    IO::Mesh_file surface;
+    try {
+      const auto seed_bits = static_cast<unsigned>(seed);
+      surface = shape == "torus" ? T::make_seamless_torus(n) : shape == "seamcube" ? T::make_seamless_cube(n)
+              : shape == "pillow" ? T::make_seamless_pillow(n)
+              : shape == "seamdisk" ? T::make_seamless_ruffled_disk(std::size_t(n), int(amplitude), seed_bits)
+                                  : T::make_seamless_staircase(n, seed_bits);
+    } catch(const std::invalid_argument& e) {
+      std::cerr << usage << e.what() << "\n";
+      return 2;
+    }
     // (the disk's tangling is its folded projection)
     const std::size_t moved = shape == "seamdisk" ? 0 : T::tangle_seamless(surface, amplitude, 0.5, static_cast<unsigned>(seed));
     try {

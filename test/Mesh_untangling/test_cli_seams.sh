@@ -139,7 +139,14 @@ check "seamdisk: the same seams and rotations" [ "$(json seamdisk.json seams_kep
 check "seamdisk: same OBJ layout" same_layout seamdisk.obj seamdisk-out.obj
 "$MAKE" seamdisk 4 4 0 x.obj > /dev/null 2> seamdisk-bad.err
 check "seamdisk with a cone of 4 quarter turns: exit 2" [ $? = 2 ]
-check "seamdisk with a cone of 4 quarter turns: what is wanted" grep -q "the cone's quarter turns, 1 to 7 but 4" seamdisk-bad.err
+check "seamdisk with a cone of 4 quarter turns: what is wanted" grep -q "a cone of 1 to 7 quarter turns, not 4" seamdisk-bad.err
+"$MAKE" seamdisk 4 2.5 0 x.obj > /dev/null 2> seamdisk-bad.err
+check "seamdisk with a cone of 2.5 quarter turns: exit 2" [ $? = 2 ]
+check "seamdisk with a cone of 2.5 quarter turns: what is wanted" grep -q "the cone's quarter turns, an integer" seamdisk-bad.err
+"$MAKE" seamdisk 201 2 0 x.obj > /dev/null 2> seamdisk-bad.err
+check "seamdisk with 201 rings: exit 2" [ $? = 2 ]
+check "seamdisk with 201 rings: what is wanted" grep -q "seamdisk: \[2, 200\]" seamdisk-bad.err
+check "seamdisk refused: no file written" [ ! -e x.obj ]
 
 # a seam whose sides are no transition: exit 2, the line and the edge named
 sed '0,/^vt 10 5$/s//vt 10.25 5/' torus.obj > bad.obj   # (u = 10: a seam's side)

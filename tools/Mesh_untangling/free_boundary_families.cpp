@@ -46,45 +46,12 @@ std::string format(double value)
 
 using Vec3 = std::array<double, 3>;
 
-/// The map of a 3D surface seen along z after turning it by `degrees` about the x axis.
-void project_tilted(Mesh_file& m, double degrees)
-{
-  const double c = std::cos(radians(degrees)), s = std::sin(radians(degrees));
-  m.map.resize(m.rest.size());
-  for(std::size_t v = 0; v < m.rest.size(); ++v) {
-    const Vec3& p = m.rest[v];
-    m.map[v] = {p[0], c * p[1] - s * p[2], 0.};
-  }
-  m.rest_dimension = 3;
-  m.map_dimension = 2;
-}
-
 void set_fixed(Mesh_file& m, std::vector<std::size_t> ids)
 {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   m.fixed = std::move(ids);
   m.has_fixed = !m.fixed.empty();
-}
-
-/// Triangles between two concentric rings of evenly spaced vertices (inner
-/// first, both starting at angle 0), merged by angle: every triangle
-/// counter-clockwise.
-void stitch_rings(const std::vector<std::size_t>& inner, const std::vector<std::size_t>& outer,
-                  std::vector<std::array<std::size_t, 4>>& triangles)
-{
-  const std::size_t ni = inner.size(), no = outer.size();
-  std::size_t i = 0, j = 0;
-  while(i < ni || j < no) {
-    const double next_inner = double(i + 1) / double(ni), next_outer = double(j + 1) / double(no);
-    if(j < no && (i == ni || next_outer < next_inner)) {
-      triangles.push_back({inner[i % ni], outer[j], outer[(j + 1) % no], 0});
-      ++j;
-    } else {
-      triangles.push_back({inner[i], outer[j % no], inner[(i + 1) % ni], 0});
-      ++i;
-    }
-  }
 }
 
 /// Kuhn grid of the cells (i, j, k) < (nx, ny, nz) that `keep` accepts, with
@@ -135,38 +102,6 @@ Vec3 turned_about_vertical(const Vec3& p, double cx, double cy, double angle)
 
 // ---------------------------------------------------------------------------
 // 2D
-
-Mesh_file make_ruffled_disk(const Ruffled_disk& p)
-{
-  if(p.valence < 3 || p.rings < 1) throw std::invalid_argument("ruffled disk: valence >= 3 and rings >= 1");
-  Mesh_file m;
-  m.simplex_size = 3;
-  std::mt19937 random(p.seed);
-  std::uniform_real_distribution<double> unit(-1., 1.);
-  const double spacing = 1. / double(p.rings);
-  auto lift = [&](double r, double phi) {
-    const double z = p.amplitude * std::pow(r, p.power) * std::sin(double(p.frequency) * phi) +
-                     (r > 0 ? p.roughness * spacing * unit(random) : 0.);
-    return Vec3{r * std::cos(phi), r * std::sin(phi), z};
-  };
-  m.rest.push_back(lift(0, 0));
-  std::vector<std::size_t> inner = {0};
-  for(std::size_t r = 1; r <= p.rings; ++r) {
-    const std::size_t count = p.valence * r;
-    std::vector<std::size_t> ring;
-    for(std::size_t j = 0; j < count; ++j) {
-      ring.push_back(m.rest.size());
-      m.rest.push_back(lift(double(r) * spacing, 2 * pi * double(j) / double(count)));
-    }
-    if(r == 1)
-      for(std::size_t j = 0; j < count; ++j) m.simplices.push_back({0, ring[j], ring[(j + 1) % count], 0});
-    else
-      stitch_rings(inner, ring, m.simplices);
-    inner = std::move(ring);
-  }
-  project_tilted(m, p.tilt_degrees);
-  return m;
-}
 
 Mesh_file make_tilted_formed_sheet(std::size_t ns, std::size_t ny, double max_angle_degrees, double tilt_degrees,
                                    double ripple)

@@ -9,6 +9,8 @@
 #ifndef MESH_UNTANGLING_TOOLS_FREE_BOUNDARY_FAMILIES_H
 #define MESH_UNTANGLING_TOOLS_FREE_BOUNDARY_FAMILIES_H
 
+#include "generators.h"
+
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 
 #include <cstdint>
@@ -27,18 +29,7 @@ using CGAL::Mesh_untangling::IO::Mesh_file;
 // each triangle's target its own triangle laid flat, or a planar mesh), `map`
 // the tangled 2D map (z = 0).
 
-/// A disk of `rings` rings around a centre of valence `valence` (ring r has
-/// valence * r vertices), lifted to the ruffled surface
-/// z = amplitude r^power sin(frequency phi) + roughness noise (radius 1;
-/// the rim has more area than a flat disk: angle excess), then seen through
-/// a projection tilted by `tilt_degrees` about the x axis.  Nothing fixed.
-struct Ruffled_disk
-{
-  std::size_t valence = 12, rings = 6, frequency = 5;
-  double amplitude = 0.3, power = 2, roughness = 0.1, tilt_degrees = 60;
-  std::uint32_t seed = 0;
-};
-Mesh_file make_ruffled_disk(const Ruffled_disk& p);
+// make_ruffled_disk (generators.h): a ruffled disk seen through a tilted projection.
 
 /// The inverse-forming sheet (generators.h), turned by `tilt_degrees` about
 /// its length before the projection on Oxy, its surface rippled by

@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <initializer_list>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 namespace Mesh_untangling_tools {
 
@@ -277,6 +279,89 @@ inline Mesh_file make_rough_cap(std::size_t n, double max_polar, double roughnes
   m.rest_dimension = 3;
   m.map = m.rest;
   m.map_dimension = 3;
+  return m;
+}
+
+/// The map of a 3D surface seen along z after turning it by `degrees` about the x axis.
+inline void project_tilted(Mesh_file& m, double degrees)
+{
+  const double pi = 3.14159265358979323846;
+  const double c = std::cos(degrees * pi / 180), s = std::sin(degrees * pi / 180);
+  m.map.resize(m.rest.size());
+  for(std::size_t v = 0; v < m.rest.size(); ++v) {
+    const auto& p = m.rest[v];
+    m.map[v] = {p[0], c * p[1] - s * p[2], 0.};
+  }
+  m.rest_dimension = 3;
+  m.map_dimension = 2;
+}
+
+/// Triangles between two concentric rings of evenly spaced vertices (inner
+/// first, both starting at angle 0), merged by angle: every triangle
+/// counter-clockwise.
+inline void stitch_rings(const std::vector<std::size_t>& inner, const std::vector<std::size_t>& outer,
+                         std::vector<std::array<std::size_t, 4>>& triangles)
+{
+  const std::size_t ni = inner.size(), no = outer.size();
+  std::size_t i = 0, j = 0;
+  while(i < ni || j < no) {
+    const double next_inner = double(i + 1) / double(ni), next_outer = double(j + 1) / double(no);
+    if(j < no && (i == ni || next_outer < next_inner)) {
+      triangles.push_back({inner[i % ni], outer[j], outer[(j + 1) % no], 0});
+      ++j;
+    } else {
+      triangles.push_back({inner[i], outer[j % no], inner[(i + 1) % ni], 0});
+      ++i;
+    }
+  }
+}
+
+/// A disk of `rings` rings around a centre of valence `valence` (ring r has
+/// valence * r vertices), lifted to the ruffled surface
+/// z = amplitude r^power sin(frequency phi) + roughness noise (radius 1;
+/// the rim has more area than a flat disk: angle excess), then seen through
+/// a projection tilted by `tilt_degrees` about the x axis.  Nothing fixed.
+struct Ruffled_disk
+{
+  std::size_t valence = 12, rings = 6, frequency = 5;
+  double amplitude = 0.3, power = 2, roughness = 0.1, tilt_degrees = 60;
+  std::uint32_t seed = 0;
+};
+
+/// The ruffled disk's triangles, rest and tilted map; `polar_angles`, when
+/// given, receives each vertex's angle phi in [0, 2 pi) (the centre's 0).
+inline Mesh_file make_ruffled_disk(const Ruffled_disk& p, std::vector<double>* polar_angles = nullptr)
+{
+  if(p.valence < 3 || p.rings < 1) throw std::invalid_argument("ruffled disk: valence >= 3 and rings >= 1");
+  const double pi = 3.14159265358979323846;
+  Mesh_file m;
+  m.simplex_size = 3;
+  std::mt19937 random(p.seed);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  const double spacing = 1. / double(p.rings);
+  auto lift = [&](double r, double phi) {
+    const double z = p.amplitude * std::pow(r, p.power) * std::sin(double(p.frequency) * phi) +
+                     (r > 0 ? p.roughness * spacing * unit(random) : 0.);
+    m.rest.push_back({r * std::cos(phi), r * std::sin(phi), z});
+    if(polar_angles) polar_angles->push_back(phi);
+  };
+  if(polar_angles) polar_angles->clear();
+  lift(0, 0);
+  std::vector<std::size_t> inner = {0};
+  for(std::size_t r = 1; r <= p.rings; ++r) {
+    const std::size_t count = p.valence * r;
+    std::vector<std::size_t> ring;
+    for(std::size_t j = 0; j < count; ++j) {
+      ring.push_back(m.rest.size());
+      lift(double(r) * spacing, 2 * pi * double(j) / double(count));
+    }
+    if(r == 1)
+      for(std::size_t j = 0; j < count; ++j) m.simplices.push_back({0, ring[j], ring[(j + 1) % count], 0});
+    else
+      stitch_rings(inner, ring, m.simplices);
+    inner = std::move(ring);
+  }
+  project_tilted(m, p.tilt_degrees);
   return m;
 }
 

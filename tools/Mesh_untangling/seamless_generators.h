@@ -14,6 +14,8 @@
 #ifndef MESH_UNTANGLING_TOOLS_SEAMLESS_GENERATORS_H
 #define MESH_UNTANGLING_TOOLS_SEAMLESS_GENERATORS_H
 
+#include "generators.h"
+
 #include <CGAL/Mesh_untangling/IO/Mesh_file.h>
 
 #include <algorithm>
@@ -226,57 +228,26 @@ inline CGAL::Mesh_untangling::IO::Mesh_file make_seamless_pillow(std::size_t n)
 }
 
 /// A seamless map with a free boundary and a cone (issue 37, the setting of
-/// the paper's Fig. 18, where runs can end with a vertex wound twice): the ruffled disk of `rings` rings around a centre of valence
-/// 12 (z = 0.3 r^2 sin 5 phi + noise from `seed`), seen through a projection
-/// tilted by 60 degrees (it folds), cut along phi = 0 from the rim to the
-/// centre, and each corner turned about the centre by -phi (4 - q) / 4: the
-/// two sides of the cut differ by a rotation by q quarter turns, the centre
-/// is a cone of angle q pi / 2.  Tangled where the projection folds; nothing
-/// fixed but the cone (the seam translations kept).
+/// the paper's Fig. 18, where runs can end with a vertex wound twice): the
+/// ruffled disk of `rings` rings around a centre of valence 12
+/// (generators.h: z = 0.3 r^2 sin 5 phi + noise from `seed`, seen through a
+/// projection tilted by 60 degrees, which folds it), cut along phi = 0 from
+/// the rim to the centre, and each corner turned about the centre by
+/// -phi (4 - q) / 4: the two sides of the cut differ by a rotation by q
+/// quarter turns, the centre is a cone of angle q pi / 2.  Tangled where the
+/// projection folds; nothing fixed but the cone (the seam translations kept).
 inline CGAL::Mesh_untangling::IO::Mesh_file make_seamless_ruffled_disk(std::size_t rings, int cone_quarters,
                                                                        unsigned seed)
 {
   if(rings < 1 || cone_quarters < 1 || cone_quarters == 4 || cone_quarters > 7)
     throw std::invalid_argument("seamless ruffled disk: rings >= 1 and a cone of 1 to 7 quarter turns, not 4");
-  const double pi = std::acos(-1.), tilt = 60 * pi / 180, spacing = 1. / double(rings);
-  const std::size_t valence = 12;
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(-1., 1.);
-  CGAL::Mesh_untangling::IO::Mesh_file m;
-  m.simplex_size = 3;
-  m.rest_dimension = 3;
+  Ruffled_disk disk;
+  disk.rings = rings;
+  disk.seed = seed;
   std::vector<double> phi;
-  const auto lift = [&](double r, double angle) {
-    const double z = 0.3 * (r * r) * std::sin(5 * angle) + (r > 0 ? 0.1 * spacing * unit(random) : 0.);
-    m.rest.push_back({r * std::cos(angle), r * std::sin(angle), z});
-    phi.push_back(angle);
-  };
-  lift(0, 0);
-  std::vector<std::size_t> inner = {0};
-  for(std::size_t r = 1; r <= rings; ++r) {
-    const std::size_t count = valence * r;
-    std::vector<std::size_t> ring;
-    for(std::size_t j = 0; j < count; ++j) {
-      ring.push_back(m.rest.size());
-      lift(double(r) * spacing, 2 * pi * double(j) / double(count));
-    }
-    // (rings stitched by the fraction of the turn each vertex is at)
-    const std::size_t ni = inner.size(), no = count;
-    if(r == 1)
-      for(std::size_t j = 0; j < no; ++j) m.simplices.push_back({0, ring[j], ring[(j + 1) % no], 0});
-    for(std::size_t i = 0, j = 0; r > 1 && (i < ni || j < no);) {
-      if(j < no && (i == ni || double(j + 1) / double(no) < double(i + 1) / double(ni))) {
-        m.simplices.push_back({inner[i % ni], ring[j], ring[(j + 1) % no], 0});
-        ++j;
-      } else {
-        m.simplices.push_back({inner[i], ring[j % no], inner[(i + 1) % ni], 0});
-        ++i;
-      }
-    }
-    inner = std::move(ring);
-  }
-  const auto& o = m.rest[0];
-  const double ox = o[0], oy = std::cos(tilt) * o[1] - std::sin(tilt) * o[2];
+  CGAL::Mesh_untangling::IO::Mesh_file m = make_ruffled_disk(disk, &phi);
+  const double pi = std::acos(-1.);
+  const std::array<double, 3> centre = m.map[0];
   std::map<std::pair<std::size_t, bool>, std::size_t> texture;   // (vertex, at the cut's end) -> vt
   for(const auto& t : m.simplices) {
     const double top = (std::max)({phi[t[0]], phi[t[1]], phi[t[2]]});
@@ -287,14 +258,15 @@ inline CGAL::Mesh_untangling::IO::Mesh_file make_seamless_ruffled_disk(std::size
       const auto [slot, is_new] = texture.try_emplace({v, end}, m.corner_map.size());
       if(is_new) {
         const double a = -(end ? 2 * pi : phi[v]) * double(4 - cone_quarters) / 4;
-        const auto& p = m.rest[v];
-        const double x = p[0] - ox, y = std::cos(tilt) * p[1] - std::sin(tilt) * p[2] - oy;
+        const double x = m.map[v][0] - centre[0], y = m.map[v][1] - centre[1];
         m.corner_map.push_back({std::cos(a) * x - std::sin(a) * y, std::sin(a) * x + std::cos(a) * y, 0.});
       }
       ft[std::size_t(k)] = slot->second;
     }
     m.simplex_corner_map.push_back(ft);
   }
+  m.map.clear();
+  m.map_dimension = 0;
   return m;
 }
 
