@@ -865,6 +865,8 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["integer_grid_singular_vertices_after"] = grid_after.singular;
   j["integer_grid_singular_at_vertices_after"] = grid_after.at_vertices;
   j["integer_grid_points_in_inverted_before"] = grid_before.in_inverted;
+  j["integer_grid_faces_not_quads_before"] = grid_before.faces_not_quads;
+  j["integer_grid_faces_not_quads_after"] = grid_after.faces_not_quads;
   j["quad_mesh"] = quads.why_not.empty() ? "extracted" : quads.why_not;
   j["quads"] = quads.mesh.cells.size();
   j["quad_vertices"] = quads.mesh.rest.size();
@@ -999,6 +1001,9 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
     std::fprintf(stderr, "singular vertices of the integer-grid isolines: %zu -> %zu (%zu at surface vertices)%s\n",
                  grid_before.singular, grid_after.singular, grid_after.at_vertices,
                  free ? "; translations free: the grid is not aligned with the seams any more" : "");
+    if(grid_before.faces_not_quads + grid_after.faces_not_quads != 0)
+      std::fprintf(stderr, "grid faces that are not quads (around vertices off the integer points whose star does "
+                   "not turn once): %zu -> %zu\n", grid_before.faces_not_quads, grid_after.faces_not_quads);
     if(quads->why_not.empty())
       std::fprintf(stderr, "integer-grid quads: %zu on %zu vertices%s\n", quads->mesh.cells.size(),
                    quads->mesh.rest.size(),

@@ -43,6 +43,7 @@ for shape in torus:10:0:100:0 seamcube:6:8:216:2 pillow:6:4:72:2 staircase:3:249
   check "$name: $cones cones" [ "$(json "$name.json" cones)" = "$cones" ]
   check "$name: only the cones are singular on the integer grid" \
     [ "$(json "$name.json" integer_grid_singular_vertices_after)" = "$cones" ]
+  check "$name: every grid face a quad" [ "$(json "$name.json" integer_grid_faces_not_quads_after)" = 0 ]
   check "$name: pictures with seams" grep -q 'class="seam"' "$name.svg"
   check "$name: quads extracted" [ "$(json "$name.json" quad_mesh)" = extracted ]
   check "$name: $quads quads (the map's area)" [ "$(grep -c '^f ' "$name-quads.obj")" = "$quads" ]
@@ -136,6 +137,10 @@ check "seamdisk: not locally invertible" [ "$(json seamdisk.json locally_inverti
 check "seamdisk: no inverted triangle left" [ "$(json seamdisk.json inverted_after)" = 0 ]
 check "seamdisk: the vertices wound twice counted" [ "$(json seamdisk.json overwound_vertices)" -gt 0 ]
 check "seamdisk: the same seams and rotations" [ "$(json seamdisk.json seams_kept)" = True ]
+# (an interior vertex wound twice off the integer points sits in a grid face of 8 sides; a boundary one is not counted)
+faces=$(json seamdisk.json integer_grid_faces_not_quads_after)
+check "seamdisk: the vertices wound twice inside make grid faces that are no quads ($faces)" \
+  [ "$faces" -gt 0 -a "$faces" -le "$(json seamdisk.json overwound_vertices)" ]
 check "seamdisk: same OBJ layout" same_layout seamdisk.obj seamdisk-out.obj
 "$MAKE" seamdisk 4 4 0 x.obj > /dev/null 2> seamdisk-bad.err
 check "seamdisk with a cone of 4 quarter turns: exit 2" [ $? = 2 ]
@@ -176,6 +181,8 @@ check "free: the same seams and rotations" [ "$(json cube-free.json seams_kept)"
 check "free: seam sides together through their new transitions to 1e-12" \
   at_most "$(json cube-free.json max_seam_side_gap_own_transitions)" 1e-12
 check "free: no wedge fixed (the cones move)" [ "$(json cube-free.json fixed_wedges)" = 0 ]
+check "free: the cones off the integer points, each in a grid face of 3 sides" \
+  [ "$(json cube-free.json integer_grid_faces_not_quads_after)" = 8 ]
 check "free: same OBJ layout" same_layout seamcube.obj cube-free.obj
 "$MAKE" square 4 0.3 1 square.obj > /dev/null
 "$UNTANGLE" square.obj -o s.obj --seams free-translations --quiet 2> noseam.err

@@ -598,7 +598,8 @@ Grid_singularities integer_grid_singularities(const Mesh_file& mesh)
   }
   const std::vector<bool> boundary = boundary_vertices(mesh);
   for(std::size_t v = 0; v < mesh.rest.size(); ++v)
-    if(in_face[v] && on_integer[v] && !boundary[v] && std::lround(4 * angle[v] / (2 * pi)) != 4) ++g.at_vertices;
+    if(in_face[v] && !boundary[v] && std::lround(4 * angle[v] / (2 * pi)) != 4)
+      ++(on_integer[v] ? g.at_vertices : g.faces_not_quads);
   // integer points off the vertices, in or on the edges of non-positive triangles (an edge's point once)
   std::set<std::array<long long, 4>> edge_points;
   for(std::size_t k = 0; k < mesh.simplices.size(); ++k) {

@@ -150,11 +150,15 @@ Seam_summary compare_seams(const Mesh_file& before, const Mesh_file& after);
 /// every integer point inside or on an edge of a triangle that is not
 /// positive in its chart (the quads there turn over).  A locally injective
 /// map has exactly its cones (on integer points) as singular vertices.
+/// A vertex off the integer points whose star does not turn by 2 pi (a star
+/// wound twice, a cone moved off the grid) is no grid vertex: the grid's
+/// face around it has round(4 x angle sum / 2 pi) sides, not 4.
 struct Grid_singularities
 {
-  std::size_t singular = 0;            ///< all of the below
+  std::size_t singular = 0;            ///< at_vertices + in_inverted
   std::size_t at_vertices = 0;         ///< integer points at surface vertices of valence other than 4
   std::size_t in_inverted = 0;         ///< integer points in (or on the edges of) non-positive triangles
+  std::size_t faces_not_quads = 0;     ///< interior surface vertices off the integer points, not turning by 2 pi
 };
 Grid_singularities integer_grid_singularities(const Mesh_file& mesh);
 
