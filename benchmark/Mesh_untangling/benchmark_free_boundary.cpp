@@ -202,7 +202,7 @@ void child_run(int fd, const Family_instance& instance, double time_limit, int t
         << j.overwound_edges << " " << j.fixed_moved << " " << j.boundary_crossings << " " << j.phantoms << " "
         << j.continuation_steps << " " << j.continuation_motion << " " << j.eps_steps << " " << j.final_epsilon << " "
         << j.input_returned << " "
-        << j.locally_invertible << " " << j.boundary_simple;
+        << j.locally_invertible << " " << j.boundary_simple << " " << j.size;
     send("figures", out.str());
     send("status", j.status);
   } catch(const std::bad_alloc&) {
@@ -302,7 +302,7 @@ Outcome run_in_child(const Family_instance& instance, double time_limit, int thr
         j.overwound_interior_vertices >> j.overwound_boundary_vertices >> j.overwound_edges >> j.fixed_moved >>
         j.boundary_crossings >> j.phantoms >> j.continuation_steps >> j.continuation_motion >> j.eps_steps >>
         j.final_epsilon >>
-        j.input_returned >> j.locally_invertible >> j.boundary_simple;
+        j.input_returned >> j.locally_invertible >> j.boundary_simple >> j.size;
     j.overwound_vertices = j.overwound_interior_vertices + j.overwound_boundary_vertices;
     o.ran = bool(in);
     o.status = values["status"];
@@ -331,7 +331,7 @@ std::string instance_line(const Outcome& o, const Family_instance& instance)
   out << j.elements << " elements, " << j.fixed << " fixed; " << j.inverted_before << " inverted before -> "
       << j.inverted << " inverted, over-wound vertices " << j.overwound_interior_vertices << " interior + "
       << j.overwound_boundary_vertices << " boundary, over-wound edges " << j.overwound_edges << ", fixed moved "
-      << j.fixed_moved << ", boundary crossings " << j.boundary_crossings
+      << j.fixed_moved << ", size " << j.size << " of the rest's, boundary crossings " << j.boundary_crossings
       << (instance.boundary_should_be_simple ? " (should be 0)" : " (not judged)") << "; " << j.phantoms
       << " phantoms, " << j.continuation_steps << " continuation steps"
       << (j.continuation_motion > 0 && j.continuation_motion < 1

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 
 using namespace Mesh_untangling_tools;
@@ -28,9 +29,9 @@ void check_instance(const std::string& name, Mesh_file mesh, bool boundary_shoul
 {
   const Judgement j = untangle_and_judge(mesh, 120);
   std::printf("%-48s %6zu elements %4zu fixed: %4zu inverted before -> %zu inverted, %zu over-wound vertices, "
-              "%zu over-wound edges, %zu fixed moved, %zu crossings, %.2f s\n",
+              "%zu over-wound edges, %zu fixed moved, %zu crossings, size %.3g of the rest's, %.2f s\n",
               name.c_str(), j.elements, j.fixed, j.inverted_before, j.inverted, j.overwound_vertices,
-              j.overwound_edges, j.fixed_moved, j.boundary_crossings, j.seconds);
+              j.overwound_edges, j.fixed_moved, j.boundary_crossings, j.size, j.seconds);
   CHECK_MESSAGE(j.inverted == 0, name << ": " << j.inverted << " inverted");
   CHECK_MESSAGE(j.overwound_vertices == 0 && j.overwound_edges == 0,
                 name << ": " << j.overwound_vertices << " over-wound vertices, " << j.overwound_edges << " edges");
@@ -38,6 +39,8 @@ void check_instance(const std::string& name, Mesh_file mesh, bool boundary_shoul
   CHECK_MESSAGE(j.fixed_moved == 0, name << ": " << j.fixed_moved << " fixed vertices moved");
   if(boundary_should_be_simple)
     CHECK_MESSAGE(j.boundary_simple, name << ": " << j.boundary_crossings << " boundary crossings");
+  // (a map shrunk to a point is locally invertible by the exact predicates)
+  CHECK_MESSAGE(j.size > 1e-3, name << ": the map shrank to " << j.size << " of the rest's size");
 }
 
 /// The problem must be tangled, or the check above proves nothing.
@@ -70,6 +73,19 @@ int main(int argc, char** argv)
     if(i.name.find("tilt70") != std::string::npos)   // the kind: a centre of valence 72 seen from 70°
       check_tangled(i.name, i.make(), 50);
     check_instance(i.name, i.make(), i.boundary_should_be_simple);
+  }
+  // The size of a map that nothing holds (map_size.h): ruffled disks of 6
+  // rings, nothing fixed, where 7 seeds of 10 ended "locally invertible" at
+  // 1e-16 to 1e-27 of the rest's area before the map's size was restored.
+  for(std::uint32_t seed = 0; seed < 10; ++seed) {
+    Ruffled_disk p;
+    p.seed = seed;
+    Mesh_file mesh = make_ruffled_disk(p);
+    const Judgement j = untangle_and_judge(mesh, 120);
+    std::printf("ruffled disk, 6 rings, seed %u: %s, size %.3g of the rest's\n", seed, j.status.c_str(), j.size);
+    CHECK_MESSAGE(j.locally_invertible, "ruffled disk seed " << seed << ": " << j.status);
+    CHECK_MESSAGE(j.size > 0.5 && j.size < 2, "ruffled disk seed " << seed << ": the map's size is " << j.size
+                                                 << " of the rest's");
   }
   check_instance("formed sheet 40x8 140° tilt 30", make_tilted_formed_sheet(40, 8, 140, 30, 0.01), true);
   check_instance("rolled strip 24x4 2 turns tilt 20", make_rolled_strip(24, 4, 2, 20), true);

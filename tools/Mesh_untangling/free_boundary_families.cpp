@@ -19,6 +19,8 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -847,6 +849,19 @@ void judge_map(const Mesh_file& m, const std::vector<bool>& is_fixed, Judgement&
   const auto boundary = MU::check_boundary_self_intersections<D>(positions, simplices, 0);
   j.boundary_crossings = boundary.number_of_intersecting_pairs;
   j.boundary_simple = boundary.is_simple();
+  // the map's size against the rest's: |volume| of each element (a rest triangle may lie in 3D)
+  double map_size = 0, rest_size = 0;
+  for(const auto& t : m.simplices) {
+    Eigen::Matrix<double, 3, D> map_edges, rest_edges;
+    for(std::size_t i = 0; i < D; ++i)
+      for(int c = 0; c < 3; ++c) {
+        map_edges(c, i) = m.map[t[i + 1]][c] - m.map[t[0]][c];
+        rest_edges(c, i) = m.rest[t[i + 1]][c] - m.rest[t[0]][c];
+      }
+    map_size += std::sqrt(std::abs((map_edges.transpose() * map_edges).determinant()));
+    rest_size += std::sqrt(std::abs((rest_edges.transpose() * rest_edges).determinant()));
+  }
+  j.size = rest_size > 0 ? map_size / rest_size : 1.;
 }
 
 } // namespace

@@ -161,10 +161,16 @@ struct Judgement
   bool input_returned = false;
   bool locally_invertible = false;             ///< no inverted element, no over-wound star or edge fan
   bool boundary_simple = false;
+  /// the map's total |volume| over the rest's: near 0 for a map shrunk to a
+  /// point, which the exact predicates still call locally invertible
+  double size = 0;
 
-  /// locally invertible, fixed vertices exact, and a simple boundary where it should be
+  /// locally invertible, fixed vertices exact, not shrunk below a thousandth
+  /// of the rest's size, and a simple boundary where it should be
   bool passes(bool boundary_should_be_simple) const
-  { return locally_invertible && fixed_moved == 0 && (!boundary_should_be_simple || boundary_simple); }
+  {
+    return locally_invertible && fixed_moved == 0 && size > 1e-3 && (!boundary_should_be_simple || boundary_simple);
+  }
 };
 
 /// Untangles `mesh.map` in place through CGAL::untangle_mesh (triangles:

@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_options.h>
 #include <CGAL/Mesh_untangling/internal/epsilon_schedule.h>
+#include <CGAL/Mesh_untangling/internal/map_size.h>
 #include <CGAL/Mesh_untangling/internal/solvers/LBFGS_solver.h>
 #include <CGAL/Mesh_untangling/internal/solvers/Newton_solver.h>
 
@@ -242,13 +243,25 @@ public:
         newton ? newton->minimize(P, eps, theta_, inner_iterations(valid), valid ? polish_tolerance_ : 1e-4)
                : lbfgs_solver(curvature).minimize(P, eps, theta_, inner_iterations(valid),
                                                            [this] { return out_of_time() || trial_spent() || budget_spent(); });
-      const double E = energy<d>(P, P.x.data(), eps, theta_);
+      double E = energy<d>(P, P.x.data(), eps, theta_);
       result_.energy_evaluations += inner.evaluations + 2;
       result_.inner_iterations += inner.iterations;
       if(newton) charge_evaluations(inner.evaluations + 2);   // (L-BFGS pays for each one as it goes)
       ++result_.outer_iterations;
       if(!std::isfinite(E)) { P.x = previous; out.numerical_failure = true; break; }
       summary = determinant_summary(P, P.x.data());
+      // A map whose size nothing holds may shrink while it is tangled (map_size.h:
+      // runs that shrank untangled in 10 eps steps, where holding the size
+      // every step took 130 to 380); once its mesh is valid (a phantom may stay
+      // flat), it gets its size back before the energy settles, and is not
+      // settled on this step.
+      // (more non-positive elements than phantoms: some are the mesh's)
+      const bool resized = summary.non_positive <= P.elements.size() - P.mesh_elements && restore_free_size(P);
+      if(resized) {
+        curvature = Chunked_LBFGS();   // (its pairs were of the shrunk map)
+        E = energy<d>(P, P.x.data(), eps, theta_);
+        summary = determinant_summary(P, P.x.data());
+      }
       if(summary.non_positive < least_tangled_count_) {
         least_tangled_count_ = summary.non_positive;
         least_tangled_ = P.x;
@@ -262,7 +275,7 @@ public:
       // Newton's end is a converged solve from a valid map (the published
       // test on the energy change would stop it after a loose tangled-phase solve).
       // (held translations, see above: not settled before they have moved)
-      const bool settled = !held &&
+      const bool settled = !held && !(resized && rule == Stopping_rule::SETTLED_ENERGY) &&
                            (newton && rule == Stopping_rule::SETTLED_ENERGY
                               ? valid && inner.converged && summary.min_det > 0
                               : loop_ends(rule, E, E_prev, summary.min_det));
