@@ -871,7 +871,9 @@ void write_seamless_report(std::ostream& out, const Arguments& args, const std::
   j["quads"] = quads.mesh.cells.size();
   j["quad_vertices"] = quads.mesh.rest.size();
   j["open_grid_edges"] = quads.open_edges;
-  j["phantom_protection"] = false;
+  j["phantom_protection"] = !args.no_phantoms;   // (across the seams, where a run left stars wound twice)
+  j["phantom_elements"] = r.number_of_phantom_elements;
+  j["phantom_vertices"] = r.number_of_phantom_vertices;
   j["stop"] = args.stop;
   j["solver"] = r.solver;
   j["theta"] = args.theta >= 0 ? args.theta : MU::default_theta(2);
@@ -916,7 +918,8 @@ int run_seamless(const Arguments& args, Mesh_file& mesh)
   if(args.slide_boundary)
     throw Usage_error("--slide-boundary is not offered for seamless parameterizations (OBJ with seams)");
   if(!args.phantoms.empty())
-    throw Usage_error(args.phantoms + ": no phantom element protects a seamless parameterization (see the manual)");
+    throw Usage_error(args.phantoms + ": the phantom elements of a seamless parameterization are not written (its "
+                      "phantom vertices are wedges seen from another chart)");
   if(args.continuation == "always")
     throw Usage_error("--continuation always: a seamless parameterization has no rest shape in the plane");
   check_output_paths(args);
@@ -1167,7 +1170,8 @@ int main(int argc, char** argv)
                  "projected on its best-fit plane; the surface is the rest)")
     ->check(CLI::IsMember({"given", "project"}));
   app.add_flag("--no-phantoms", args.no_phantoms, "no phantom elements on a free boundary (with --continuation never, the published scheme: "
-               "no inverted element, but stars may be covered twice)");
+               "no inverted element, but stars may be covered twice), nor across the seams of a seamless map whose "
+               "run left stars wound twice");
   app.add_option("--continuation", args.continuation, "move the fixed vertices from their rest positions in steps, "
                  "each untangled from the previous map (needs a rest shape in the map's dimension and a fixed vertex; "
                  "the free vertices start at rest): 'auto' when the direct untangling of a free-boundary problem fails, "

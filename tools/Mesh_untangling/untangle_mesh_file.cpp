@@ -505,8 +505,9 @@ Untangling_result untangle_seamless(Mesh_file& mesh, const std::vector<bool>& is
   const auto callback = step_callback(options);
   const Untangling_result result = CGAL::untangle_mesh(s.mesh, s.uv,
     with_theta_and_solver(options, 2,
+    MU::parameters::phantom_protection(options.phantoms,
     MU::parameters::seam_translations(options.seam_translations,
-    run_parameters(options, CGAL::parameters::default_values(), fixed, callback))));
+    run_parameters(options, CGAL::parameters::default_values(), fixed, callback)))));
   if(result.status == MU::Untangling_status::INVALID_INPUT) throw Invalid_problem(result.message);
   read_back_corner_map(s, mesh);
   return result;

@@ -220,6 +220,9 @@ CGAL_MESH_UNTANGLING_PARAMETER(rest_points, mesh_untangling_rest_points_t)
 /// `bool`: add phantom elements when some boundary vertex is free, so that
 /// the result is locally invertible rather than only free of inverted
 /// elements (default `true`; without a free boundary vertex none is needed).
+/// On a seamless parameterization, a run that leaves stars wound twice is
+/// run again with phantoms written across the seams, and that run kept
+/// when it is locally invertible and not collapsed.
 CGAL_MESH_UNTANGLING_PARAMETER(phantom_protection, mesh_untangling_phantom_protection_t)
 /// \ingroup PkgMeshUntanglingNamedParameters
 /// A range of `CGAL::Mesh_untangling::Phantom_element`: phantoms to use instead

@@ -229,6 +229,7 @@ public:
     std::vector<std::size_t> counts;   // of non-positive elements after each step
     std::size_t idle_steps = 0;        // in a row, without an inner iteration
     Chunked_LBFGS curvature;           // (carried from one eps step to the next: see Chunked_LBFGS)
+    const Free_size<d> free_size = free_size_of(P);   // (map_size.h)
     while(steps_ < options_.max_outer_iterations && !P.elements.empty()) {
       const double E_prev = energy<d>(P, P.x.data(), eps, theta_);
       const std::vector<double> previous = P.x;
@@ -256,7 +257,7 @@ public:
       // flat), it gets its size back before the energy settles, and is not
       // settled on this step.
       // (more non-positive elements than phantoms: some are the mesh's)
-      const bool resized = summary.non_positive <= P.elements.size() - P.mesh_elements && restore_free_size(P);
+      const bool resized = summary.non_positive <= P.elements.size() - P.mesh_elements && restore_free_size(P, free_size);
       if(resized) {
         curvature = Chunked_LBFGS();   // (its pairs were of the shrunk map)
         E = energy<d>(P, P.x.data(), eps, theta_);

@@ -393,8 +393,8 @@ void validate_input(const Untangling_input<d>& in)
     throw std::invalid_argument("more phantoms than elements or vertices");
   validate_links<d>(in.links, n, in.is_fixed);
   validate_sliding<d>(in.sliding, in.number_of_mesh_vertices());
-  if(in.has_links() && (in.phantom_elements > 0 || in.has_cells()))
-    throw std::invalid_argument("linked vertices (seams) take neither phantoms nor cells");
+  if(in.has_links() && in.has_cells())
+    throw std::invalid_argument("linked vertices (seams) take no cells");
   const std::size_t mesh_m = in.number_of_mesh_elements(), mesh_n = in.number_of_mesh_vertices();
   auto name = [&](std::size_t k) {
     return k < mesh_m ? "element " + std::to_string(k) : "phantom element " + std::to_string(k - mesh_m);

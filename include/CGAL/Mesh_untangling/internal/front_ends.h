@@ -316,7 +316,8 @@ void output_phantom_elements(const Phantom_elements<d>& phantoms, const std::vec
     Phantom_element<Vertex, Point> p;
     for(int i = 0; i <= d; ++i) {
       const std::size_t v = phantoms.elements[k][i];
-      p.vertices[i] = vertex_of(v);
+      // (a seamless surface's phantom vertex is a copy of a wedge: its vertex is the wedge's)
+      p.vertices[i] = vertex_of(v >= n && !phantoms.copies.empty() ? phantoms.copies[v - n].representative : v);
       p.target[i] = point(phantoms.targets[k][i]);
       p.positions[i] = point(v < n ? map[v] : phantoms.extra_vertices[v - n]);
     }

@@ -30,11 +30,49 @@ namespace CGAL {
 namespace Mesh_untangling {
 namespace internal {
 
+/// About which point a map of `P` may be scaled and stay a map of `P`: the
+/// centroid of its free vertices when nothing is fixed and nothing linked,
+/// or the one point where every fixed vertex is and that every seam's
+/// transition keeps (a seamless disk with one cone: every seam goes through
+/// it).  Decided once per run: the fixed positions and the links do not
+/// change within it.
+template <int d>
+struct Free_size
+{
+  bool free = false;
+  bool about_centroid = false;
+  Eigen::Matrix<double, d, 1> centre = Eigen::Matrix<double, d, 1>::Zero();
+};
+
+template <int d>
+Free_size<d> free_size_of(const Untangling_problem<d>& P)
+{
+  Free_size<d> f;
+  if(P.retracts() || P.mesh_elements == 0 || P.links.has_parents()) return f;
+  if(P.number_of_fixed_vertices == 0 && P.links.empty()) {
+    f.free = f.about_centroid = true;
+    return f;
+  }
+  bool found = false;
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(P.is_fixed[v] == 1) {
+      if(!found) f.centre = P.point(v);
+      else if(P.point(v) != f.centre) return f;
+      found = true;
+    }
+  if(!found) return f;
+  for(std::size_t w = 0; w < P.number_of_vertices; ++w)
+    if(P.links.is_linked(w) && (P.links.image(w, f.centre) - f.centre).norm() > 1e-12 * (1 + f.centre.norm()))
+      return f;
+  f.free = true;
+  return f;
+}
+
 /// Whether nothing holds the size of `P`'s map (see the file's comment).
 template <int d>
 bool size_is_free(const Untangling_problem<d>& P)
 {
-  return P.number_of_fixed_vertices == 0 && P.links.empty() && !P.retracts() && P.mesh_elements > 0;
+  return free_size_of(P).free;
 }
 
 /// The size of the mesh's elements of a map: the mean |det J|, weighted by
@@ -78,27 +116,40 @@ Map_size map_size(const Untangling_problem<d>& P, const double* x)
 /// too, keeps its shape and, but for rounding, its orientation); whether it
 /// was.  A map of the right size is left alone, to the bit.
 template <int d>
-bool restore_free_size(Untangling_problem<d>& P)
+bool restore_free_size(Untangling_problem<d>& P, const Free_size<d>& f)
 {
-  if(!size_is_free(P)) return false;
+  if(!f.free) return false;
   const Map_size size = map_size(P, P.x.data());
   if(!(size.min_det > 0) || !(size.mean_abs_det < 0.5)) return false;
   const double s = std::pow(size.mean_abs_det, -1. / d);
-  Eigen::Matrix<double, d, 1> centroid = Eigen::Matrix<double, d, 1>::Zero();
-  std::size_t free = 0;
+  Eigen::Matrix<double, d, 1> centre = f.centre;
+  if(f.about_centroid) {
+    centre.setZero();
+    std::size_t free = 0;
+    for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+      if(P.is_fixed[v] == 0) {
+        centre += P.point(v);
+        ++free;
+      }
+    if(free == 0) return false;
+    centre /= double(free);
+  }
   for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(P.is_fixed[v] == 0) {
-      centroid += P.point(v);
-      ++free;
-    }
-  if(free == 0) return false;
-  centroid /= double(free);
-  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
-    if(P.is_fixed[v] == 0) {
+    if(P.is_fixed[v] == 0 && !P.links.is_linked(v)) {
       Eigen::Map<Eigen::Matrix<double, d, 1>> p(&P.x[d * v]);
-      p = centroid + s * (p - centroid);
+      p = centre + s * (p - centre);
     }
+  // (the wedges follow their representatives through the transitions, which keep the centre)
+  for(std::size_t w = 0; w < P.number_of_vertices; ++w)
+    if(P.links.is_linked(w) && P.is_fixed[w] == 0)
+      Eigen::Map<Eigen::Matrix<double, d, 1>>(&P.x[d * w]) = P.links.image(w, P.point(P.links.representative[w]));
   return true;
+}
+
+template <int d>
+bool restore_free_size(Untangling_problem<d>& P)
+{
+  return restore_free_size(P, free_size_of(P));
 }
 
 } // namespace internal

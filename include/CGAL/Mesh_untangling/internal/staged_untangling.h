@@ -292,6 +292,9 @@ Untangling_result untangle_directly(Untangling_input<d>& in, const Untangling_op
     phantoms_used->elements.assign(in.elements.begin() + m, in.elements.end());
     phantoms_used->targets.assign(in.targets.begin() + m, in.targets.end());
     phantoms_used->extra_vertices.assign(in.positions.begin() + n, in.positions.end());
+    phantoms_used->copies.clear();
+    for(std::size_t v = n; v < in.links.representative.size(); ++v)
+      phantoms_used->copies.push_back({in.links.representative[v], in.links.turns[v], in.links.translation[v]});
   }
   CGAL_MESH_UNTANGLING_STAGE("direct: verdict");
   remove_phantom_elements<d>(in);

@@ -30,7 +30,8 @@ public:
       targets_given_(!in.targets.empty()),
       anything_fixed_(std::find(in.is_fixed.begin(), in.is_fixed.end(), true) != in.is_fixed.end()),
       phantoms_supplied_(request.supplied.has_value()),
-      builds_phantoms_(takes_phantoms() && internal::builds_phantoms(request, [this] { return free_boundary_; }))
+      builds_phantoms_(takes_phantoms() && internal::builds_phantoms(request, [this] { return free_boundary_; })),
+      protects_across_seams_(seamless_ && internal::builds_phantoms(request, [&in] { return stars_can_wind_twice<d>(in); }))
   {
     no_protection_.enabled = false;
   }
@@ -68,11 +69,23 @@ public:
   // --- Which strategy applies.
 
   /// Phantom elements are built on vertex stars, which the overlapping
-  /// corners of cells do not form; built on the stars of a cut mesh, they
-  /// would protect a seam's wedge as a boundary star (see the manual).
+  /// corners of cells do not form; a seamless surface's stars span several
+  /// charts, and are protected by a rung of their own (seam_protection_applies).
   /// A sliding boundary keeps its shape on its target: it is not free, and
   /// phantoms (made for a free one) would pull it away.
   bool takes_phantoms() const { return !cells_ && !seamless_ && !sliding_; }
+
+  /// Whether a seamless run that ends with stars wound twice is run again
+  /// with phantoms written across the seams (driver/seam_protection.h):
+  /// where a star can wind twice with every triangle positive (a free
+  /// boundary, a cone above 2 pi) and the caller did not turn phantoms off.
+  /// Not first: on the generated disks (the manual's table) the protected
+  /// run took 5 to 15 times as long, and around cones of 3 pi / 2 it ended
+  /// locally invertible less often than the unprotected one.
+  bool seam_protection_applies() const { return protects_across_seams_; }
+
+  /// The protection of that rung's run.
+  const Protection_request<d>& seam_protection() const { return across_seams_; }
 
   /// The protection a run of this kind uses: the request, or none.
   const Protection_request<d>& protection(const Protection_request<d>& request) const
@@ -154,8 +167,9 @@ public:
   }
 
 private:
-  bool cells_, seamless_, sliding_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_, builds_phantoms_;
-  Protection_request<d> no_protection_;
+  bool cells_, seamless_, sliding_, free_boundary_, targets_given_, anything_fixed_, phantoms_supplied_,
+    builds_phantoms_, protects_across_seams_;
+  Protection_request<d> no_protection_, across_seams_;   // (across_seams_: built by the default request)
 };
 
 } // namespace internal

@@ -13,6 +13,8 @@
 //      start (carried_start.h) or the direct run and then the continuation;
 //      with nothing fixed, the run from the rest shape (rest_start.h), and
 //      in 2D the convex start (convex_start.h);
+//      on a seamless surface, where that left stars wound twice, the run
+//      again with phantoms across the seams (seam_protection.h);
 //   2. the local repair of the few elements left inverted (local_repair.h);
 //   3. on request, local refinement, whose refined problems climb rungs 1
 //      and 2 again (refinement/local_refinement.h);
@@ -29,6 +31,7 @@
 #include <CGAL/Mesh_untangling/internal/driver/convex_start.h>
 #include <CGAL/Mesh_untangling/internal/driver/quality_rung.h>
 #include <CGAL/Mesh_untangling/internal/driver/rest_start.h>
+#include <CGAL/Mesh_untangling/internal/driver/seam_protection.h>
 #include <CGAL/Mesh_untangling/internal/local_repair.h>
 #include <CGAL/Mesh_untangling/internal/progress.h>
 #include <CGAL/Mesh_untangling/internal/refinement/local_refinement.h>
@@ -132,6 +135,10 @@ Untangling_result climb_the_ladder(Untangling_input<d>& in, std::vector<Eigen::M
         keep_the_better(run, direct_map, std::move(*convex), in);
     }
   }
+  protect_stars_across_seams<d>(run, in, given, budget, kind,
+                                [&](const Untangling_options& o, const Protection_request<d>& across_seams) {
+                                  return run_directly<d>(in, o, kind, across_seams);
+                                });
   if(phantoms_used) *phantoms_used = std::move(run.phantoms);
   Untangling_result& r = run.result;
   if(!progress.cancelled() && kind.local_repair_applies())

@@ -4,8 +4,9 @@
 // Phantom elements (Garanzha et al., free-boundary paper, section 3) in the form the core consumes,
 // whatever made them (2D phantom triangles, 3D phantom tetrahedra, or the
 // user): extra simplices with their own targets, and possibly extra vertices
-// (3D irregular boundary stars), appended to an Untangling_input for the
-// energy and removed before anything is reported or written back.
+// (3D irregular boundary stars; on a seamless surface, copies of wedges in
+// a neighbouring chart), appended to an Untangling_input for the energy and
+// removed before anything is reported or written back.
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_ELEMENTS_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_PHANTOM_ELEMENTS_H
 
@@ -36,6 +37,17 @@ struct Phantom_elements
   std::vector<Simplex> elements;
   std::vector<Target> targets;            ///< one per element, positively oriented
   std::vector<Vector> extra_vertices;     ///< initial map positions of the phantom vertices (free unknowns)
+
+  /// A phantom vertex of a seamless problem is no unknown: it is a wedge
+  /// seen from a neighbouring chart, x = Q^turns x_representative + translation.
+  struct Copy
+  {
+    std::size_t representative;
+    int turns;
+    Vector translation;
+  };
+  /// one per extra vertex when the mesh's vertices are linked (Vertex_links), else empty
+  std::vector<Copy> copies;
 
   std::size_t size() const { return elements.size(); }
   bool empty() const { return elements.empty(); }
@@ -89,6 +101,10 @@ void append_phantom_elements(Untangling_input<d>& in, const Phantom_elements<d>&
   if(phantoms.targets.size() != phantoms.elements.size())
     throw std::invalid_argument(std::to_string(phantoms.elements.size()) + " phantom elements with " +
                                 std::to_string(phantoms.targets.size()) + " targets");
+  if(in.has_links() && phantoms.copies.size() != phantoms.extra_vertices.size())
+    throw std::invalid_argument("phantom vertices of a seamless problem must each copy a wedge");
+  if(in.links.has_parents() && !phantoms.copies.empty())
+    throw std::invalid_argument("phantom vertices are not offered with free seam translations");
   const std::size_t n = in.positions.size() + phantoms.extra_vertices.size();
   for(std::size_t k = 0; k < phantoms.elements.size(); ++k) {
     const auto& e = phantoms.elements[k];
@@ -102,8 +118,20 @@ void append_phantom_elements(Untangling_input<d>& in, const Phantom_elements<d>&
                                       " repeated");
     }
   }
+  for(std::size_t i = 0; i < phantoms.copies.size(); ++i)
+    if(phantoms.copies[i].representative >= in.positions.size() || in.links.is_linked(phantoms.copies[i].representative))
+      throw std::invalid_argument("phantom vertex " + std::to_string(i) + " copies no representative");
   in.positions.insert(in.positions.end(), phantoms.extra_vertices.begin(), phantoms.extra_vertices.end());
   if(!in.is_fixed.empty()) in.is_fixed.resize(n, false);
+  if(in.has_links()) {   // (a copy is fixed with its wedge)
+    for(const auto& c : phantoms.copies) {
+      in.links.representative.push_back(c.representative);
+      in.links.turns.push_back(c.turns);
+      in.links.translation.push_back(c.translation);
+      if(!in.is_fixed.empty()) in.is_fixed[in.links.representative.size() - 1] = in.is_fixed[c.representative];
+    }
+    if(!phantoms.copies.empty()) in.links.finish();
+  }
   in.elements.insert(in.elements.end(), phantoms.elements.begin(), phantoms.elements.end());
   in.targets.insert(in.targets.end(), phantoms.targets.begin(), phantoms.targets.end());
   in.phantom_elements = phantoms.elements.size();
@@ -117,6 +145,12 @@ void remove_phantom_elements(Untangling_input<d>& in)
   const std::size_t n = in.number_of_mesh_vertices(), m = in.number_of_mesh_elements();
   in.positions.resize(n);
   if(!in.is_fixed.empty()) in.is_fixed.resize(n);
+  if(in.has_links() && in.links.representative.size() > n) {
+    in.links.representative.resize(n);
+    in.links.turns.resize(n);
+    in.links.translation.resize(n);
+    in.links.finish();
+  }
   in.elements.resize(m);
   if(in.targets.size() > m) in.targets.resize(m);
   in.phantom_elements = in.phantom_vertices = 0;

@@ -2,19 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Which phantom elements protect a problem: the user's, or the ones the
-// package builds when some boundary vertex is free (with a fixed boundary a
-// star cannot wind twice without an inverted element, so none are needed).
+// package builds when some boundary vertex is free or a seamless surface has
+// a cone above 2 pi (otherwise a star cannot wind twice without an inverted
+// element, so none are needed).
 #ifndef CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_BOUNDARY_PROTECTION_H
 #define CGAL_MESH_UNTANGLING_INTERNAL_PHANTOMS_BOUNDARY_PROTECTION_H
 
 #include <CGAL/Mesh_untangling/internal/phantoms/Phantom_elements.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/phantom_tetrahedra.h>
 #include <CGAL/Mesh_untangling/internal/phantoms/phantom_triangles.h>
+#include <CGAL/Mesh_untangling/internal/phantoms/phantoms_across_seams.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
-
 #include <optional>
 #include <vector>
 
@@ -44,6 +45,7 @@ struct Protection_summary
 inline Phantom_elements<2> build_phantom_elements(const Untangling_input<2>& in, Protection_summary& summary,
                                                   bool /* protect_fixed_boundaries: not offered in 2D */ = false)
 {
+  if(in.has_links()) return build_phantoms_across_seams(in, summary.incomplete_stars);
   Phantom_statistics statistics;
   const auto phantoms = compute_phantom_triangles(in.positions.size(), in.elements, in.targets, in.is_fixed, &statistics);
   summary.incomplete_stars = statistics.incomplete_stars;
@@ -93,14 +95,30 @@ Phantom_elements<d> build_phantom_elements_on(const Untangling_input<d>& in,
   return build_phantom_elements(on_geometry, summary, true);
 }
 
-/// Whether a run builds phantoms of its own under `request`: only where a
-/// boundary vertex is free (`has_free_boundary()`, asked last: it may have
-/// to find the boundary) can a star be covered twice without an inverted
-/// element, and supplied phantoms replace built ones.
-template <int d, typename Predicate>
-bool builds_phantoms(const Protection_request<d>& request, const Predicate& has_free_boundary)
+/// Whether a star of `in` can be covered twice with every element
+/// positive.  The angles of positive triangles always sum to pi each, so a
+/// star can only take a turn more where another gives one up: a free
+/// boundary, which may turn once more, or on a seamless surface a cone above
+/// 2 pi, which may fall a turn short (the surface check catches it; a run
+/// without phantoms can end there, the paper's Fig. 18).
+template <int d>
+bool stars_can_wind_twice(const Untangling_input<d>& in)
 {
-  return !request.supplied && request.enabled && has_free_boundary();
+  if(has_free_boundary_vertex<d>(in)) return true;
+  const bool all_fixed = !in.is_fixed.empty() && std::find(in.is_fixed.begin(), in.is_fixed.end(), false) == in.is_fixed.end();
+  if(!in.has_links() || all_fixed) return false;
+  return std::any_of(in.links.angle.begin(), in.links.angle.end(),
+                     [](double angle) { return angle > phantom_two_pi * (1 + 1e-9); });
+}
+
+/// Whether a run builds phantoms of its own under `request`: only where a
+/// star can be covered twice without an inverted element
+/// (`can_wind_twice()`, asked last: it may have to find the boundary), and
+/// supplied phantoms replace built ones.
+template <int d, typename Predicate>
+bool builds_phantoms(const Protection_request<d>& request, const Predicate& can_wind_twice)
+{
+  return !request.supplied && request.enabled && can_wind_twice();
 }
 
 /// Appends the phantoms that `request` calls for to `in` (mesh targets are
@@ -111,7 +129,7 @@ template <int d>
 Protection_summary protect_boundary(Untangling_input<d>& in, const Protection_request<d>& request)
 {
   Protection_summary summary;
-  if(!request.supplied && !builds_phantoms(request, [&] { return has_free_boundary_vertex<d>(in); })) return summary;
+  if(!request.supplied && !builds_phantoms(request, [&] { return stars_can_wind_twice<d>(in); })) return summary;
   if(in.targets.empty()) in.targets = default_targets<d>(in);
   const Phantom_elements<d> phantoms = request.supplied ? *request.supplied : build_phantom_elements(in, summary);
   append_phantom_elements<d>(in, phantoms);
