@@ -194,6 +194,17 @@ Untangling_input<d> perturbed_grid_input(int n, double amplitude, std::mt19937& 
   return in;
 }
 
+/// Every element's target: the element itself, as the map has it.
+template <int d>
+void make_own_rest(Untangling_input<d>& in)
+{
+  for(const auto& e : in.elements) {
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
+    for(int i = 0; i <= d; ++i) t[i] = in.positions[e[i]];
+    in.targets.push_back(t);
+  }
+}
+
 template <int d>
 Untangling_problem<d> perturbed_grid(int n, double amplitude, std::mt19937& random)
 {
@@ -210,11 +221,7 @@ template <int d>
 void check_colouring(std::mt19937& random, int n)
 {
   Untangling_input<d> in = perturbed_grid_input<d>(n, 0.3, random);
-  for(const auto& e : in.elements) {
-    std::array<Eigen::Matrix<double, d, 1>, d + 1> t;
-    for(int i = 0; i <= d; ++i) t[i] = in.positions[e[i]];
-    in.targets.push_back(t);
-  }
+  make_own_rest(in);
   in.phantom_elements = in.elements.size() / 5;
   const Untangling_problem<d> P = make_untangling_problem<d>(in, CGAL::Mesh_untangling::Target_scaling::AS_GIVEN);
   const std::size_t m = P.elements.size();
@@ -397,6 +404,84 @@ void check_hessian_reuse(std::mt19937& random, int n)
   CHECK_MESSAGE(same(newton.hessian(), fresh_eps.hessian()) && g == g_fresh, "d=" << d << ": a new eps reused Hessians");
 }
 
+/// From a valid map (the solver's own assembly, which counts the
+/// non-positive elements), an element lighter than light_element_share times the
+/// mean weight adds mean_weight c~ c~^T / D^2 to the Hessian, c~ the
+/// gradient of its det J in its vertex coordinates; heavier elements and a
+/// map with a non-positive element get the plain Hessian.
+template <int d>
+void check_light_element_barrier(std::mt19937& random, int n)
+{
+  // a perturbed grid as its own rest, then its free vertices moved a little
+  Untangling_input<d> in = perturbed_grid_input<d>(n, 0.3, random);
+  make_own_rest(in);
+  Untangling_problem<d> P = make_untangling_problem<d>(in);
+  std::uniform_real_distribution<double> offset(-0.05 / n, 0.05 / n);
+  for(std::size_t v = 0; v < P.number_of_vertices; ++v)
+    if(!P.is_fixed[v])
+      for(int c = 0; c < d; ++c) P.x[d * v + c] += offset(random);
+  CHECK_MESSAGE(determinant_summary(P, P.x.data()).min_det > 0, "d=" << d << ": the grid is not valid");
+  // every fifth element a millionth of its weight, the weights summing to 1 again
+  double sum = 0;
+  for(std::size_t k = 0; k < P.elements.size(); ++k) sum += P.weights[k] *= (k % 5 == 0 ? 1e-6 : 1.);
+  for(double& w : P.weights) w /= sum;
+  const double theta = d == 2 ? 1. / 128 : 0.5, eps = 1e-10, mean_weight = 1. / double(P.elements.size());
+  const int free = int(P.number_of_vertices - P.number_of_fixed_vertices);
+  Eigen::VectorXd g(d * free);
+  Newton_solver<d> plain(P), solver(P);
+  plain.assemble(P, eps, theta, g);
+  std::size_t non_positive = 1;
+  solver.assemble(P, eps, theta, g, &non_positive);
+  CHECK(non_positive == 0);
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::size_t light = 0;
+  for(std::size_t k = 0; k < P.elements.size(); ++k) {
+    if(!(P.weights[k] < light_element_share * mean_weight)) continue;
+    ++light;
+    const auto J = jacobian(P, P.x.data(), k);
+    const Eigen::Matrix<double, d, d + 1> c = J.determinant() * J.inverse().transpose() * P.gradient_operators[k].transpose();
+    const double scale = mean_weight / (J.determinant() * J.determinant());
+    for(int a = 0; a <= d; ++a)
+      for(int b = 0; b <= d; ++b) {
+        const int fa = plain.free_index(P.elements[k][a]), fb = plain.free_index(P.elements[k][b]);
+        if(fa < 0 || fb < 0) continue;
+        for(int r = 0; r < d; ++r)
+          for(int s = 0; s < d; ++s) triplets.emplace_back(d * fa + r, d * fb + s, scale * c(r, a) * c(s, b));
+      }
+  }
+  CHECK_MESSAGE(light >= (P.elements.size() + 4) / 5, "d=" << d << ": " << light << " light elements");   // (and a few of the others)
+  Eigen::SparseMatrix<double> barrier(d * free, d * free);
+  barrier.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SparseMatrix<double> with = solver.hessian().template selfadjointView<Eigen::Lower>(),
+                                    without = plain.hessian().template selfadjointView<Eigen::Lower>();
+  const double off = Eigen::SparseMatrix<double>(with - without - barrier).norm() / barrier.norm();
+  CHECK_MESSAGE(off <= 1e-10, "d=" << d << ": the barrier is off by " << off);
+
+  // one element turned over: the plain Hessian
+  std::size_t moved = 0;
+  while(P.is_fixed[moved]) ++moved;
+  const Eigen::Matrix<double, d, 1> from = P.point(moved);
+  for(std::size_t k = 0; k < P.elements.size(); ++k)
+    if(std::find(P.elements[k].begin(), P.elements[k].end(), moved) != P.elements[k].end()) {
+      // the vertex mirrored through the opposite facet's centroid turns the element over
+      Eigen::Matrix<double, d, 1> centroid = Eigen::Matrix<double, d, 1>::Zero();
+      for(std::size_t v : P.elements[k])
+        if(v != moved) centroid += P.point(v) / d;
+      for(int c = 0; c < d; ++c) P.x[d * moved + c] = 2 * centroid(c) - from(c);
+      break;
+    }
+  Newton_solver<d> plain_tangled(P), solver_tangled(P);
+  plain_tangled.assemble(P, eps, theta, g);
+  solver_tangled.assemble(P, eps, theta, g, &non_positive);
+  CHECK(non_positive > 0);
+  const auto& A = plain_tangled.hessian();
+  const auto& B = solver_tangled.hessian();
+  CHECK_MESSAGE(std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr()),
+                "d=" << d << ": a tangled map got the barrier");
+  std::cout << "d=" << d << ": " << light << " light elements of " << P.elements.size() << ", barrier as built\n";
+}
+
 /// The first root of a polynomial in (0, limit]: simple roots, a root the
 /// polynomial only touches, a dip below zero between two positive ends, no
 /// root, degrees 1 to 3.  What it returns is positive for the polynomial and
@@ -507,6 +592,8 @@ int main()
   check_colouring<3>(random, 6);
   check_hessian_reuse<2>(random, 12);
   check_hessian_reuse<3>(random, 5);
+  check_light_element_barrier<2>(random, 10);
+  check_light_element_barrier<3>(random, 4);
   check_first_positive_root();
   check_step_bound<2>(random, 20);
   check_step_bound<3>(random, 6);
