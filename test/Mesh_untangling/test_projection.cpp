@@ -479,6 +479,33 @@ void check_light_element_barrier(std::mt19937& random, int n)
   const auto& B = solver_tangled.hessian();
   CHECK_MESSAGE(std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr()),
                 "d=" << d << ": a tangled map got the barrier");
+
+  // the barrier switched on and off within one solver's cache, which then
+  // recomputes the light elements only: as a fresh solver's, but for the
+  // rounding of the changes (at an eps where the tangled map's Hessian is
+  // not 1e20, whose changes would round to more than the valid map's Hessian)
+  const double switch_eps = 0.1;
+  const auto mirrored = P.x;
+  const auto fresh_hessian = [&](bool valid) {
+    Newton_solver<d> fresh(P);
+    std::size_t count = 0;
+    fresh.assemble(P, switch_eps, theta, g, &count);
+    CHECK(valid == (count == 0));
+    return Eigen::SparseMatrix<double>(fresh.hessian());
+  };
+  const auto off_by = [&](const Newton_solver<d>& s, const Eigen::SparseMatrix<double>& fresh) {
+    return Eigen::SparseMatrix<double>(s.hessian() - fresh).norm() / fresh.norm();
+  };
+  Newton_solver<d> switching(P);
+  switching.assemble(P, switch_eps, theta, g, &non_positive);
+  for(int c = 0; c < d; ++c) P.x[d * moved + c] = from(c);
+  switching.assemble(P, switch_eps, theta, g, &non_positive);
+  const double switched_on = off_by(switching, fresh_hessian(true));
+  CHECK_MESSAGE(switched_on <= 1e-12, "d=" << d << ": the barrier switched on is off by " << switched_on);
+  P.x = mirrored;
+  switching.assemble(P, switch_eps, theta, g, &non_positive);
+  const double switched_off = off_by(switching, fresh_hessian(false));
+  CHECK_MESSAGE(switched_off <= 1e-12, "d=" << d << ": the barrier switched off leaves " << switched_off);
   std::cout << "d=" << d << ": " << light << " light elements of " << P.elements.size() << ", barrier as built\n";
 }
 

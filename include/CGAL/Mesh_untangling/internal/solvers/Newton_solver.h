@@ -556,7 +556,9 @@ public:
   /// Builds the Hessian's pattern and its symbolic factorization, whose
   /// cost prediction (`factorization_flops`) tells the caller whether this
   /// solver pays on the problem.
-  explicit Newton_solver(const Untangling_problem<d>& P) : pattern_(P), has_light_elements_(has_light_elements(P))
+  explicit Newton_solver(const Untangling_problem<d>& P)
+    : pattern_(P), mean_weight_(1. / double(std::max<std::size_t>(P.elements.size(), 1))),
+      has_light_elements_(std::any_of(P.weights.begin(), P.weights.end(), [this](double w) { return is_light(w); }))
   {
     if(pattern_.number_of_free() > 0) analyze(pattern_.matrix());
   }
@@ -721,25 +723,27 @@ public:
     light_barrier = light_barrier && has_light_elements_;   // (else the same bits as without)
     pattern_.locate_blocks(P);
     auto& H = pattern_.matrix();
-    const bool fresh = cache_.size() != P.elements.size() || cache_eps_ != eps || cache_theta_ != theta ||
-                       cache_light_barrier_ != light_barrier;
+    const bool fresh = cache_.size() != P.elements.size() || cache_eps_ != eps || cache_theta_ != theta;
+    // (a switch of the barrier changes the light elements' Hessians only: they alone are recomputed)
+    const bool barrier_switched = !fresh && cache_light_barrier_ != light_barrier;
     if(fresh) {
       std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.);
       cache_.assign(P.elements.size(), Element_key());
       hessians_.resize(P.elements.size());
       cache_eps_ = eps;
       cache_theta_ = theta;
-      cache_light_barrier_ = light_barrier;
     }
+    cache_light_barrier_ = light_barrier;
     const Simplex_energy<d> f{theta, eps};
-    const double mean_weight = 1. / double(P.elements.size());   // (the weights sum to 1)
     coloured_sum(P, [&](std::size_t k) {
       const auto J = jacobian(P, P.x.data(), k);
       Eigen::Matrix<double, d, d> C;
       const double D = determinant_and_cofactor<d>(J.data(), C.data());   // (as partials computes it)
       Element_key& key = cache_[k];
-      if(key.valid && (J - key.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * key.J.squaredNorm()
-         && std::abs(D - key.D) <= reuse_tolerance * std::abs(key.D))
+      const bool light = is_light(P.weights[k]);
+      if(key.valid && !(barrier_switched && light) &&
+         (J - key.J).squaredNorm() <= reuse_tolerance * reuse_tolerance * key.J.squaredNorm() &&
+         std::abs(D - key.D) <= reuse_tolerance * std::abs(key.D))
         return 0.;
       Packed_hessian& cached = hessians_[k];
 #if defined(__GNUC__)
@@ -749,8 +753,7 @@ public:
 #endif
       typename Simplex_energy<d>::Vertex_hessian M;
       Simplex_energy<d>::vertex_hessian(J, f.partials(J, true), P.gradient_operators[k], P.weights[k], M);
-      if(light_barrier && P.weights[k] < light_element_share * mean_weight && D > 0)
-        add_light_element_barrier(C, D, P.gradient_operators[k], mean_weight, M);
+      if(light_barrier && light && D > 0) add_light_element_barrier(C, D, P.gradient_operators[k], mean_weight_, M);
       Packed_hessian added;   // what H receives: M, or its change
       const bool replaces = key.valid;
       int i = 0;   // (packed_index(row, col), counted)
@@ -787,12 +790,7 @@ private:
   /// element's vertex coordinates.  Its determinant then shrinks by a bounded
   /// factor per step with every other light element's at once, and the
   /// energy, the gradient and hence the minimum are unchanged.
-  static bool has_light_elements(const Untangling_problem<d>& P)
-  {
-    const double mean_weight = 1. / double(std::max<std::size_t>(P.elements.size(), 1));
-    return std::any_of(P.weights.begin(), P.weights.end(),
-                       [mean_weight](double w) { return w < light_element_share * mean_weight; });
-  }
+  bool is_light(double weight) const { return weight < light_element_share * mean_weight_; }
 
   static void add_light_element_barrier(const Eigen::Matrix<double, d, d>& C, double D,
                                         const typename Simplex_energy<d>::Gradient_operator& G, double mean_weight,
@@ -1043,7 +1041,8 @@ private:
   std::vector<Packed_hessian> hessians_;          // per element, as in the assembled H
   double cache_eps_ = -1, cache_theta_ = -1;
   bool cache_light_barrier_ = false;
-  const bool has_light_elements_;   // (has_light_elements)
+  const double mean_weight_;        // of the elements (the weights sum to 1)
+  const bool has_light_elements_;   // (is_light)
   static constexpr double reuse_tolerance = 3e-2;   // (1e-3: no gain; 1e-1: no better)
 };
 
