@@ -19,6 +19,7 @@
 
 #include <CGAL/Mesh_untangling/internal/Energy.h>
 #include <CGAL/Mesh_untangling/internal/Untangling_problem.h>
+#include <CGAL/Mesh_untangling/internal/Vertex_links.h>
 #include <CGAL/Mesh_untangling/internal/parallel_loops.h>
 
 #include <algorithm>
@@ -139,10 +140,7 @@ bool restore_free_size(Untangling_problem<d>& P, const Free_size<d>& f)
       Eigen::Map<Eigen::Matrix<double, d, 1>> p(&P.x[d * v]);
       p = centre + s * (p - centre);
     }
-  // (the wedges follow their representatives through the transitions, which keep the centre)
-  for(std::size_t w = 0; w < P.number_of_vertices; ++w)
-    if(P.links.is_linked(w) && P.is_fixed[w] == 0)
-      Eigen::Map<Eigen::Matrix<double, d, 1>>(&P.x[d * w]) = P.links.image(w, P.point(P.links.representative[w]));
+  apply_links(P.links, P.x.data());   // (through the transitions, which keep the centre)
   return true;
 }
 

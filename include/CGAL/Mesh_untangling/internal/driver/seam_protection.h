@@ -16,7 +16,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <cstdio>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -39,9 +39,9 @@ template <int d>
 bool map_collapsed(const Untangling_input<d>& in, const std::vector<Eigen::Matrix<double, d, 1>>& reference)
 {
   const auto size = [&in](const std::vector<Eigen::Matrix<double, d, 1>>& x, std::size_t k) {
-    Eigen::Matrix<double, d, d> edges;
-    for(int i = 0; i < d; ++i) edges.col(i) = x[in.elements[k][i + 1]] - x[in.elements[k][0]];
-    return edges.determinant();
+    std::array<Eigen::Matrix<double, d, 1>, d + 1> corners;
+    for(int i = 0; i <= d; ++i) corners[i] = x[in.elements[k][i]];
+    return simplex_volume<d>(corners);
   };
   const std::size_t m = in.number_of_mesh_elements();
   double total = 0, reference_total = 0, smallest = std::numeric_limits<double>::infinity();
