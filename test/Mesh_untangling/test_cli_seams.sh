@@ -129,32 +129,34 @@ check "seamcube --solver lbfgs: exit 0" [ $? = 0 ]
 # without phantoms the run ends with no inverted triangle but vertices wound
 # twice: exit 1, said so, the map written with its seams kept; by default it
 # is run again with phantoms across the seams and ends locally invertible,
-# at its size (this run had collapsed the map to det J 1e-30 before map_size.h)
+# at its size (this run had collapsed the map to det J 1e-30 before map_size.h).
+# What every run on seamdisk.obj says: its exit code (0: locally
+# invertible, 1: not), and its seams and rotations kept in the layout read.
+check_seamdisk_run() {   # LABEL CODE EXPECTED_CODE REPORT OUTPUT
+  local label=$1 code=$2 expected=$3 report=$4 output=$5 invertible=True
+  [ "$expected" = 0 ] || invertible=False
+  check "$label: exit $expected (code $code)" [ "$code" = "$expected" ]
+  check "$label: locally invertible $invertible" [ "$(json "$report" locally_invertible)" = $invertible ]
+  check "$label: the same seams and rotations" [ "$(json "$report" seams_kept)" = True ]
+  check "$label: same OBJ layout" same_layout seamdisk.obj "$output"
+}
 "$MAKE" seamdisk 4 2 0 seamdisk.obj > /dev/null
 check "seamdisk: made" [ -s seamdisk.obj ]
 "$UNTANGLE" seamdisk.obj -o seamdisk-bare.obj --report seamdisk-bare.json --no-phantoms --quiet
-code=$?
-check "seamdisk --no-phantoms: exit 1 (code $code)" [ "$code" = 1 ]
-check "seamdisk --no-phantoms: not locally invertible" [ "$(json seamdisk-bare.json locally_invertible)" = False ]
+check_seamdisk_run "seamdisk --no-phantoms" $? 1 seamdisk-bare.json seamdisk-bare.obj
 check "seamdisk --no-phantoms: no inverted triangle left" [ "$(json seamdisk-bare.json inverted_after)" = 0 ]
 check "seamdisk --no-phantoms: the vertices wound twice counted" [ "$(json seamdisk-bare.json overwound_vertices)" -gt 0 ]
 check "seamdisk --no-phantoms: no phantom" [ "$(json seamdisk-bare.json phantom_elements)" = 0 ]
-check "seamdisk --no-phantoms: the same seams and rotations" [ "$(json seamdisk-bare.json seams_kept)" = True ]
 # (an interior vertex wound twice off the integer points sits in a grid face of 8 sides; a boundary one is not counted)
 faces=$(json seamdisk-bare.json integer_grid_faces_not_quads_after)
 check "seamdisk --no-phantoms: the vertices wound twice inside make grid faces that are no quads ($faces)" \
   [ "$faces" -gt 0 -a "$faces" -le "$(json seamdisk-bare.json overwound_vertices)" ]
-check "seamdisk --no-phantoms: same OBJ layout" same_layout seamdisk.obj seamdisk-bare.obj
 "$UNTANGLE" seamdisk.obj -o seamdisk-out.obj --report seamdisk.json --quiet
-code=$?
-check "seamdisk: exit 0 (code $code)" [ "$code" = 0 ]
-check "seamdisk: locally invertible" [ "$(json seamdisk.json locally_invertible)" = True ]
+check_seamdisk_run "seamdisk" $? 0 seamdisk.json seamdisk-out.obj
 check "seamdisk: no vertex wound twice" [ "$(json seamdisk.json overwound_vertices)" = 0 ]
 check "seamdisk: protected across the seams" [ "$(json seamdisk.json phantom_elements)" -gt 0 ]
 check "seamdisk: every grid face a quad" [ "$(json seamdisk.json integer_grid_faces_not_quads_after)" = 0 ]
-check "seamdisk: the same seams and rotations" [ "$(json seamdisk.json seams_kept)" = True ]
 check "seamdisk: translations kept to 1e-12" at_most "$(json seamdisk.json max_translation_change)" 1e-12
-check "seamdisk: same OBJ layout" same_layout seamdisk.obj seamdisk-out.obj
 "$UNTANGLE" seamdisk-out.obj -o seamdisk-again.obj --quiet
 check "seamdisk: the result read back and locally invertible as it is (exit 0)" [ $? = 0 ]
 "$MAKE" seamdisk 4 4 0 x.obj > /dev/null 2> seamdisk-bad.err
