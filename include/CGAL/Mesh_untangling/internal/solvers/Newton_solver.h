@@ -753,7 +753,7 @@ public:
 #endif
       typename Simplex_energy<d>::Vertex_hessian M;
       Simplex_energy<d>::vertex_hessian(J, f.partials(J, true), P.gradient_operators[k], P.weights[k], M);
-      if(light_barrier && light && D > 0) add_light_element_barrier(C, D, P.gradient_operators[k], mean_weight_, M);
+      if(light_barrier && light && D > 0) add_light_element_barrier(C, D, P.gradient_operators[k], M);
       Packed_hessian added;   // what H receives: M, or its change
       const bool replaces = key.valid;
       int i = 0;   // (packed_index(row, col), counted)
@@ -790,18 +790,19 @@ private:
   /// element's vertex coordinates.  Its determinant then shrinks by a bounded
   /// factor per step with every other light element's at once, and the
   /// energy, the gradient and hence the minimum are unchanged.
-  bool is_light(double weight) const { return weight < light_element_share * mean_weight_; }
-
-  static void add_light_element_barrier(const Eigen::Matrix<double, d, d>& C, double D,
-                                        const typename Simplex_energy<d>::Gradient_operator& G, double mean_weight,
-                                        typename Simplex_energy<d>::Vertex_hessian& M)
+  void add_light_element_barrier(const Eigen::Matrix<double, d, d>& C, double D,
+                                 const typename Simplex_energy<d>::Gradient_operator& G,
+                                 typename Simplex_energy<d>::Vertex_hessian& M) const
   {
     const Eigen::Matrix<double, d, d + 1> CG = C * G.transpose();
     const double* c = CG.data();
-    const double scale = mean_weight / (D * D);
+    const double scale = mean_weight_ / (D * D);
     for(int col = 0; col < n; ++col)
       for(int row = col; row < n; ++row) M(row, col) += scale * c[row] * c[col];
   }
+
+  /// (light_element_share: see add_light_element_barrier)
+  bool is_light(double weight) const { return weight < light_element_share * mean_weight_; }
 
   /// The points that a step tries, and what was computed there.
   struct Step_workspace
